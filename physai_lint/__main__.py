@@ -1,0 +1,3 @@
+from physai_lint.cli import main
+
+raise SystemExit(main())

@@ -1,0 +1,1 @@
+"""The typed, position-carrying model: spans, values, the launch IR and findings."""

@@ -1,0 +1,351 @@
+"""The launch IR shared by the Python, XML and YAML frontends.
+
+One ``LaunchFile`` per parsed file. Actions are frozen dataclasses in a closed union. Every action
+has an ``id`` unique within its file (frontends use ``"<line>:<col>"`` of the call/tag, plus a suffix
+when one source position yields several actions, e.g. a helper called in a loop) so that event
+handlers and ``LoadComposableNodes`` can refer to other actions (``target_id``).
+
+The same launch system written in Python, XML or YAML must give the same IR up to spans and ids.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Literal, Union
+
+from .span import Span
+from .values import PValue, Value
+
+
+@dataclass(frozen=True, slots=True)
+class Condition:
+    """``IfCondition(v)`` -> kind "if"; ``UnlessCondition(v)`` -> "unless".
+
+    ``LaunchConfigurationEquals('x', 'v')`` is ``Condition("if", (Compare("equals", $(var x), v),))``;
+    ``LaunchConfigurationNotEquals`` uses ``"not-equals"``. An unknown condition class -> value
+    ``(Unknown(...),)``. ``raw`` keeps how it was written for messages (``IfCondition(...)``, ``if=``).
+    """
+
+    kind: Literal["if", "unless"]
+    value: Value
+    span: Span
+    raw: str = ""
+
+
+@dataclass(frozen=True, slots=True)
+class ActionBase:
+    id: str
+    span: Span
+    condition: Condition | None
+
+
+@dataclass(frozen=True, slots=True)
+class DeclareArgument(ActionBase):
+    name: str
+    default: Value | None
+    description: str | None = None
+    choices: tuple[str, ...] | None = None
+    name_span: Span | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class SetLaunchConfiguration(ActionBase):
+    """``SetLaunchConfiguration`` / XML ``<let>``."""
+
+    name: Value
+    value: Value
+
+
+@dataclass(frozen=True, slots=True)
+class IncludeArgument:
+    name: str
+    value: Value
+    span: Span
+
+
+@dataclass(frozen=True, slots=True)
+class Include(ActionBase):
+    """``IncludeLaunchDescription`` / ``<include file=...>``. ``path`` is the file path value;
+    ``arguments`` is ``None`` when they cannot be known (e.g. an unknown iterable)."""
+
+    path: Value
+    arguments: tuple[IncludeArgument, ...] | None
+    source_kind: Literal["python", "xml", "yaml", "frontend", "any"] = "any"
+
+
+@dataclass(frozen=True, slots=True)
+class Group(ActionBase):
+    """``GroupAction`` / ``<group>``. ``launch_configurations`` are set inside the group's scope
+    (``GroupAction(launch_configurations=)``, XML ``<keep>`` is not this: see ``keep``)."""
+
+    actions: tuple["Action", ...]
+    scoped: bool = True
+    forwarding: bool = True
+    launch_configurations: tuple[tuple[Value, Value], ...] = ()
+
+
+@dataclass(frozen=True, slots=True)
+class ResetLaunchConfigurations(ActionBase):
+    keep: tuple[tuple[Value, Value], ...] | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class PushNamespace(ActionBase):
+    namespace: Value
+
+
+@dataclass(frozen=True, slots=True)
+class SetRemap(ActionBase):
+    src: Value
+    dst: Value
+
+
+@dataclass(frozen=True, slots=True)
+class SetParameter(ActionBase):
+    name: Value
+    value: PValue
+
+
+@dataclass(frozen=True, slots=True)
+class SetParametersFromFile(ActionBase):
+    path: Value
+
+
+@dataclass(frozen=True, slots=True)
+class SetUseSimTime(ActionBase):
+    value: Value
+
+
+@dataclass(frozen=True, slots=True)
+class Remapping:
+    src: Value
+    dst: Value
+    span: Span
+
+
+# ---- parameter sources on a node ---------------------------------------------------------------
+
+
+@dataclass(frozen=True, slots=True)
+class ParamFile:
+    """A parameter YAML file path (str, substitutions, ``ParameterFile(...)``, ``<param from=>``)."""
+
+    path: Value
+    span: Span
+    allow_substs: bool = False
+
+
+@dataclass(frozen=True, slots=True)
+class ParamEntry:
+    """One parameter of a dict, already flattened to a dotted name."""
+
+    name: str
+    value: PValue
+    span: Span
+
+
+@dataclass(frozen=True, slots=True)
+class ParamDict:
+    """A dict of parameters (one Python dict; one XML/YAML ``<param name=...>`` each -- SEMANTICS §4a)."""
+
+    entries: tuple[ParamEntry, ...]
+    span: Span
+
+
+@dataclass(frozen=True, slots=True)
+class ParamsUnknown:
+    """Parameters that cannot be known statically (a function result, an unknown variable ...)."""
+
+    reason: str
+    span: Span
+
+
+ParamSource = Union[ParamFile, ParamDict, ParamsUnknown]
+
+
+@dataclass(frozen=True, slots=True)
+class ComposableNode:
+    package: Value | None
+    plugin: Value | None
+    name: Value | None
+    namespace: Value | None
+    parameters: tuple[ParamSource, ...]
+    remappings: tuple[Remapping, ...]
+    extra_arguments: tuple[tuple[str, Value, Span], ...]
+    span: Span
+    condition: Condition | None = None
+    id: str = ""
+
+
+@dataclass(frozen=True, slots=True)
+class NodeAction(ActionBase):
+    """``Node``, ``LifecycleNode``, ``ComposableNodeContainer`` (kind "container") / ``<node>``,
+    ``<node_container>``. ``field_spans`` maps keyword/attribute names ("package", "executable",
+    "name", "namespace", "parameters", "remappings", ...) to where they were written."""
+
+    kind: Literal["node", "lifecycle_node", "container"]
+    package: Value | None
+    executable: Value | None
+    name: Value | None
+    namespace: Value | None
+    parameters: tuple[ParamSource, ...] = ()
+    remappings: tuple[Remapping, ...] = ()
+    arguments: tuple[Value, ...] | None = ()
+    ros_arguments: tuple[Value, ...] | None = ()
+    composable_nodes: tuple[ComposableNode, ...] = ()
+    field_spans: tuple[tuple[str, Span], ...] = ()
+    exec_name: Value | None = None
+
+    def span_of(self, field_name: str) -> Span:
+        for key, span in self.field_spans:
+            if key == field_name:
+                return span
+        return self.span
+
+
+@dataclass(frozen=True, slots=True)
+class LoadComposableNodes(ActionBase):
+    """``target_id`` when the target is a container action object; ``target`` when it is a name."""
+
+    target: Value | None
+    target_id: str | None
+    nodes: tuple[ComposableNode, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class ExecuteProcess(ActionBase):
+    cmd: tuple[Value, ...] | None
+    name: Value | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class Timer(ActionBase):
+    """``TimerAction`` / ``<timer>``; ``ros`` is ``RosTimer`` / ``<ros_timer>``."""
+
+    period: Value
+    actions: tuple["Action", ...]
+    ros: bool = False
+
+
+EventKind = Literal[
+    "on_process_start", "on_process_exit", "on_execution_complete", "on_shutdown",
+    "on_state_transition", "on_process_io", "on_include_launch_description", "other",
+]
+
+
+@dataclass(frozen=True, slots=True)
+class EventHandler(ActionBase):
+    """``RegisterEventHandler(OnProcessExit(target_action=x, on_exit=[...]))``.
+
+    ``target_id`` is the id of the target action when known; ``None`` for handlers that listen to
+    every process or whose target cannot be resolved (``target_known`` False). For
+    ``OnStateTransition``, ``goal_state``/``start_state`` carry the states when given."""
+
+    event: EventKind
+    target_id: str | None
+    target_known: bool
+    actions: tuple["Action", ...]
+    goal_state: str | None = None
+    start_state: str | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class EmitEvent(ActionBase):
+    event: str
+    target_id: str | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class SetEnvironment(ActionBase):
+    op: Literal["set", "unset", "append", "reset"]
+    name: Value | None
+    value: Value | None
+
+
+@dataclass(frozen=True, slots=True)
+class Log(ActionBase):
+    message: Value
+
+
+@dataclass(frozen=True, slots=True)
+class Shutdown(ActionBase):
+    reason: Value | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class OpaqueAction(ActionBase):
+    """Actions that cannot be known statically (an unknown call returning actions, an
+    ``OpaqueFunction`` whose body could not be evaluated). ``reason`` says why. When an
+    ``OpaqueFunction`` body was evaluated, its actions are in ``actions`` and ``reason`` is ''."""
+
+    reason: str
+    actions: tuple["Action", ...] = ()
+
+
+Action = Union[
+    DeclareArgument, SetLaunchConfiguration, Include, Group, ResetLaunchConfigurations,
+    PushNamespace, SetRemap, SetParameter, SetParametersFromFile, SetUseSimTime, NodeAction,
+    LoadComposableNodes, ExecuteProcess, Timer, EventHandler, EmitEvent, SetEnvironment, Log,
+    Shutdown, OpaqueAction,
+]
+
+
+# ---- facts the Python frontend records for the syntax-level rules ------------------------------
+
+
+@dataclass(frozen=True, slots=True)
+class CallFact:
+    """A call of a known launch/launch_ros API: its qualified name (``launch_ros.actions.Node``),
+    the keyword arguments given (name, span of the keyword) and the number of positional ones.
+    ``value_kinds`` maps keyword name to a coarse kind of its value: "list", "dict", "tuple", "str",
+    "number", "bool", "none", "call", "name", "other"."""
+
+    qualname: str
+    span: Span
+    kwargs: tuple[tuple[str, Span], ...]
+    positional: int
+    value_kinds: tuple[tuple[str, str], ...] = ()
+
+
+@dataclass(frozen=True, slots=True)
+class NameFact:
+    """A name used but never imported or defined (``undefined-name``)."""
+
+    name: str
+    span: Span
+
+
+@dataclass(frozen=True, slots=True)
+class ConcatFact:
+    """A substitution joined at description time: ``'a' + LaunchConfiguration('x')``,
+    ``os.path.join(FindPackageShare('p'), 'x')``, f-string of a substitution (``how``)."""
+
+    how: Literal["plus", "os.path.join", "f-string", "format", "percent", "str"]
+    span: Span
+    detail: str
+
+
+@dataclass(frozen=True, slots=True)
+class PythonFacts:
+    calls: tuple[CallFact, ...] = ()
+    undefined_names: tuple[NameFact, ...] = ()
+    concatenations: tuple[ConcatFact, ...] = ()
+    has_generate_launch_description: bool = True
+
+
+@dataclass(frozen=True, slots=True)
+class MarkupFacts:
+    """XML/YAML: tags and attributes as written, for the unknown-attribute rule.
+    Each element: (tag, parent tag, attribute names with spans, tag span)."""
+
+    elements: tuple[tuple[str, str | None, tuple[tuple[str, Span], ...], Span], ...] = ()
+
+
+@dataclass(frozen=True, slots=True)
+class LaunchFile:
+    path: str
+    format: Literal["python", "xml", "yaml"]
+    actions: tuple[Action, ...]
+    python: PythonFacts | None = None
+    markup: MarkupFacts | None = None
+    # Workspace files the frontend read statically (yaml.safe_load of a config, sibling modules).
+    read_files: tuple[str, ...] = field(default_factory=tuple)

@@ -1,0 +1,185 @@
+"""The resolved model: what ROS 2 would launch from one entry file under given arguments.
+
+``None`` in a resolved string field means "cannot be known statically"; rules stay silent on it.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Literal, Union
+
+from physai_lint.model.findings import Diagnostic
+from physai_lint.model.launch import ComposableNode, NodeAction
+from physai_lint.model.span import Span
+
+Activity = Union[bool, None]  # True, False, or None for unknown
+NodeKind = Literal["node", "lifecycle_node", "container", "composable_node", "process"]
+
+# A parameter value as launch hands it over: bool, int, float, str, or a homogeneous list of those.
+# ``None`` means unknown.
+ParamScalar = Union[bool, int, float, str]
+ParamValue = Union[ParamScalar, list[ParamScalar], None]
+
+
+@dataclass(frozen=True, slots=True)
+class EffRemap:
+    """One remapping rule as handed to the node, in rcl order. ``origin`` "global" = ``SetRemap`` in
+    scope; "node" = the node's own ``remappings``. ``node_prefix`` for ``node:from:=to`` rules."""
+
+    src: str | None
+    dst: str | None
+    span: Span
+    origin: Literal["global", "node"]
+    node_prefix: str | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class ResolvedParamFile:
+    """A parameter file a node loads. ``path`` is the path launch would open (for a workspace
+    package: under the virtual install prefix); ``source`` is the file in the workspace it comes
+    from when known. ``status``: "ok" (exists after install), "missing" (exists nowhere),
+    "not_installed" (in the source tree but no install rule covers it), "unknown"."""
+
+    path: str | None
+    source: str | None
+    status: Literal["ok", "missing", "not_installed", "unknown"]
+    span: Span
+    origin: Literal["global", "node"]
+    allow_substs: bool = False
+
+
+@dataclass(frozen=True, slots=True)
+class ResolvedParam:
+    """One parameter from a launch dict / ``<param>`` / ``SetParameter``: typed as launch types it
+    (SEMANTICS §4a). ``value`` is ``None`` when unknown; ``raw`` is the string before YAML typing
+    when it came from substitutions or markup."""
+
+    name: str
+    value: ParamValue
+    span: Span
+    raw: str | None = None
+    typed_by: Literal["python", "yaml", "forced"] = "python"
+
+
+@dataclass(frozen=True, slots=True)
+class ResolvedParamDict:
+    """A dict source. ``key`` is the node key launch writes the temporary file under: the node's fqn
+    when name and namespace are both known, else ``/**`` (``Node._create_params_file_from_dict``)."""
+
+    params: tuple[ResolvedParam, ...]
+    span: Span
+    origin: Literal["global", "node"]
+    key: str = "/**"
+
+
+@dataclass(frozen=True, slots=True)
+class UnknownParams:
+    reason: str
+    span: Span
+
+
+ParamSourceR = Union[ResolvedParamFile, ResolvedParamDict, UnknownParams]
+
+
+@dataclass
+class NodeInstance:
+    """One process or component ROS 2 would start. ``id`` is stable within one resolution."""
+
+    id: str
+    kind: NodeKind
+    package: str | None
+    executable: str | None  # for composable nodes: the plugin class
+    name: str | None
+    namespace: str | None  # absolute, "/" for root; None when unknown
+    fqn: str | None
+    active: Activity
+    remaps: list[EffRemap]
+    param_sources: list[ParamSourceR]  # command-line order: global first, then the node's own
+    span: Span
+    file: str
+    action: NodeAction | ComposableNode | None
+    action_id: str  # "<file>#<action id>" of the IR action it came from
+    include_chain: tuple[str, ...] = ()
+    name_explicit: bool = False  # name given in the launch file (not the executable's default)
+    namespace_explicit: bool = False
+    container: str | None = None  # fqn of the container, for composable nodes
+    container_id: str | None = None
+    arguments: tuple[str | None, ...] = ()
+    in_timer: bool = False  # launched from a TimerAction (lost the group's namespace/remaps)
+    timer_lost: tuple[str, ...] = ()  # what the timer made it lose ("namespace /r1", "remap a:=b")
+    spans: dict[str, Span] = field(default_factory=dict)  # "package", "executable", "name", ...
+    name_source: str | None = None  # e.g. 'launch argument "robot" (default "r1")'
+    namespace_source: str | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class ConfigRead:
+    """A launch configuration read (``LaunchConfiguration``, ``$(var)``). ``defined`` False means
+    nothing set it at that point (real launch raises). ``has_default`` when the read has its own."""
+
+    name: str
+    span: Span
+    defined: bool
+    has_default: bool
+    active: Activity = True
+
+
+@dataclass
+class DeclaredArg:
+    name: str
+    span: Span
+    file: str
+    default: str | None  # resolved default (None: no default, or unknown when default_known False)
+    default_known: bool
+    has_default: bool
+    choices: tuple[str, ...] | None
+    value: str | None  # the value it ends up with in this launch, None when unknown/unset
+    value_origin: Literal["default", "include", "command-line", "none"]
+    value_span: Span | None = None
+    reads: int = 0
+
+
+@dataclass
+class IncludeRecord:
+    span: Span
+    file: str  # the including file
+    target: str | None  # path launch would load (install space), None when unknown
+    target_source: str | None  # the workspace file behind it
+    status: Literal["ok", "missing", "not_installed", "unknown", "cycle", "unparsed"]
+    arguments: list[tuple[str, str | None, Span]]  # name, resolved value, where it was passed
+    declared: tuple[str, ...] | None  # args the included file declares (None: unknown)
+    required_missing: tuple[str, ...] = ()
+    active: Activity = True
+    cycle: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True, slots=True)
+class StartEdge:
+    """An ordering edge for the startup plan: ``after`` starts after ``before`` (ids of nodes or of
+    processes), for ``reason`` ("on_process_start", "on_process_exit", "timer 3.0 s", "container",
+    "lifecycle", "topic /x"). ``soft`` edges (topic needs) do not make cycles errors."""
+
+    before: str
+    after: str
+    reason: str
+    span: Span
+    delay: float | None = None
+    soft: bool = False
+
+
+@dataclass
+class LaunchResult:
+    entry: str
+    arguments: dict[str, str | None]  # given on the command line plus declared defaults
+    nodes: list[NodeInstance] = field(default_factory=list)
+    config_reads: list[ConfigRead] = field(default_factory=list)
+    declared_args: list[DeclaredArg] = field(default_factory=list)
+    includes: list[IncludeRecord] = field(default_factory=list)
+    edges: list[StartEdge] = field(default_factory=list)
+    diagnostics: list[Diagnostic] = field(default_factory=list)  # found while resolving
+    files: list[str] = field(default_factory=list)  # launch files visited, in order
+    # SetRemap actions and the node ids they reached: (span, src, dst, node ids)
+    set_remaps: list[tuple[Span, str | None, str | None, list[str]]] = field(default_factory=list)
+    # Actions waiting on an event that can never come: (span, description)
+    never_started: list[tuple[Span, str]] = field(default_factory=list)
+    # Timers: (span, period seconds or None when unknown, raw period text)
+    timers: list[tuple[Span, float | None, str]] = field(default_factory=list)

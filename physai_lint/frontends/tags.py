@@ -1,0 +1,125 @@
+"""Accepted XML tags / YAML keys, their attributes, children and parents (SEMANTICS §5).
+
+``unknown_markup`` is a pure function over ``MarkupFacts`` for the unknown-attribute rule (L002):
+real launch rejects unknown attributes, keys and nested tags (``assert_entity_completely_parsed``).
+"""
+from __future__ import annotations
+
+import difflib
+from dataclasses import dataclass
+
+from physai_lint.model.launch import MarkupFacts
+from physai_lint.model.span import Span
+
+
+@dataclass(frozen=True, slots=True)
+class TagSpec:
+    attributes: frozenset[str]
+    children: frozenset[str]
+    parents: frozenset[str] | None = None  # None: anywhere an action may appear
+    action: bool = True
+
+
+_COND = frozenset({"if", "unless"})
+_PROCESS = frozenset({
+    "cwd", "name", "launch-prefix", "output", "shell", "emulate_tty", "sigterm_timeout",
+    "sigkill_timeout", "respawn", "respawn_delay", "respawn_max_retries", "on_exit",
+    "additional_env", "log_cmd", "cached_output", "output_format",
+})
+_NODE_ATTRS = (_PROCESS - {"name"}) | {"pkg", "exec", "name", "namespace", "exec_name", "args",
+                                       "ros_args", "node-name"}
+ACTION_TAGS = frozenset({
+    "arg", "let", "group", "include", "executable", "node", "node_container",
+    "load_composable_node", "push-ros-namespace", "push_ros_namespace", "set_remap",
+    "set_parameter", "set_parameters_from_file", "set_use_sim_time", "set_ros_log_dir", "timer",
+    "ros_timer", "set_env", "unset_env", "append_env", "reset_env", "reset", "log", "shutdown",
+})
+_ACTION_PARENTS = frozenset({"launch", "group", "timer", "ros_timer"})
+
+
+def _spec(attrs: set[str] | frozenset[str], children: set[str] | frozenset[str] = frozenset(),
+          parents: set[str] | None = None, action: bool = True) -> TagSpec:
+    full = frozenset(attrs) | (_COND if action else frozenset())
+    return TagSpec(full, frozenset(children), frozenset(parents) if parents else None, action)
+
+
+ACCEPTED: dict[str, TagSpec] = {
+    "launch": _spec({"version"}, ACTION_TAGS, action=False),
+    "arg": _spec({"name", "default", "description"}, {"choice"}),
+    "choice": _spec({"value"}, parents={"arg"}, action=False),
+    "let": _spec({"name", "value"}),
+    "group": _spec({"scoped", "forwarding"}, ACTION_TAGS | {"keep"}),
+    "keep": _spec({"name", "value"}, parents={"group", "reset"}, action=False),
+    "include": _spec({"file"}, {"arg"}),
+    "executable": _spec(_PROCESS | {"cmd"}, {"env"}),
+    "env": _spec({"name", "value"}, parents={"executable", "node", "node_container"},
+                 action=False),
+    "node": _spec(_NODE_ATTRS, {"param", "remap", "env"}),
+    "node_container": _spec(_NODE_ATTRS, {"param", "remap", "env", "composable_node"}),
+    "param": _spec({"name", "value", "type", "value-sep", "from", "allow_substs"}, {"param"},
+                   parents={"node", "node_container", "composable_node", "param"}, action=False),
+    "remap": _spec({"from", "to"}, parents={"node", "node_container", "composable_node"},
+                   action=False),
+    "composable_node": TagSpec(frozenset({"pkg", "plugin", "name", "namespace", "if", "unless"}),
+                               frozenset({"param", "remap", "extra_arg"}),
+                               frozenset({"node_container", "load_composable_node"}), False),
+    "extra_arg": _spec({"name", "value"}, parents={"composable_node"}, action=False),
+    "load_composable_node": _spec({"target"}, {"composable_node"}),
+    "push-ros-namespace": _spec({"namespace"}),
+    "push_ros_namespace": _spec({"namespace"}),
+    "set_remap": _spec({"from", "to"}),
+    "set_parameter": _spec({"name", "value"}),
+    "set_parameters_from_file": _spec({"filename"}),
+    "set_use_sim_time": _spec({"value"}),
+    "set_ros_log_dir": _spec({"new_log_dir"}),
+    "timer": _spec({"period", "cancel_on_shutdown"}, ACTION_TAGS),
+    "ros_timer": _spec({"period"}, ACTION_TAGS),
+    "set_env": _spec({"name", "value"}),
+    "unset_env": _spec({"name"}),
+    "append_env": _spec({"name", "value", "prepend", "separator"}),
+    "reset_env": _spec(set()),
+    "reset": _spec(set(), {"keep"}),
+    "log": _spec({"message"}),
+    "shutdown": _spec({"reason"}),
+}
+# include's <arg> children are (name, value), not DeclareLaunchArgument attributes
+_INCLUDE_ARG = _spec({"name", "value"}, action=False)
+
+# Attributes accepted by the parser but rejected right after (SEMANTICS §5, e19) or ROS 1 habits.
+_HINTS: dict[tuple[str, str], str] = {
+    ("node", "node-name"): 'use "name"; "node-name" is accepted by the parser but fails later',
+    ("node", "ns"): 'ROS 2 uses "namespace" (ROS 1 "ns")',
+    ("node", "type"): 'ROS 2 uses "exec" (ROS 1 "type")',
+    ("group", "ns"): 'ROS 2 groups take no namespace: put <push-ros-namespace namespace="..."/> '
+                     'first inside the group',
+    ("include", "ns"): "wrap the include in a <group> with a <push-ros-namespace>",
+}
+
+
+def _suggest(word: str, options: frozenset[str]) -> str | None:
+    close = difflib.get_close_matches(word, sorted(options), n=1, cutoff=0.6)
+    return close[0] if close else None
+
+
+def unknown_markup(facts: MarkupFacts) -> list[tuple[Span, str, str | None]]:
+    """Unknown tags, attributes/keys and misplaced tags: (span, message, suggestion or help)."""
+    out: list[tuple[Span, str, str | None]] = []
+    for tag, parent, attrs, span in facts.elements:
+        spec = _INCLUDE_ARG if tag == "arg" and parent == "include" else ACCEPTED.get(tag)
+        if spec is None:
+            allowed = ACCEPTED[parent].children if parent in ACCEPTED else ACTION_TAGS
+            out.append((span, f'unknown tag "{tag}"', _suggest(tag, allowed or ACTION_TAGS)))
+            continue
+        if parent is not None and parent in ACCEPTED and tag not in ACCEPTED[parent].children \
+                and not (tag == "arg" and parent == "include"):
+            out.append((span, f'tag "{tag}" is not allowed inside "{parent}"', None))
+        elif parent is None and tag != "launch":
+            out.append((span, f'unexpected root tag "{tag}"', "launch"))
+        for name, name_span in attrs:
+            if name in spec.attributes and (tag, name) not in _HINTS:
+                continue
+            if name.endswith("-sep") and name[:-4] in spec.attributes:
+                continue
+            hint = _HINTS.get((tag, name)) or _suggest(name, spec.attributes)
+            out.append((name_span, f'unknown attribute "{name}" on "{tag}"', hint))
+    return out

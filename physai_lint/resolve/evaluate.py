@@ -1,0 +1,213 @@
+"""Substitution evaluation: ``Value`` -> ``str`` (known) or ``None`` (unknown), as launch performs it.
+
+Nothing is executed: ``Command``/``$(command)`` and environment variables are unknown (the linter's
+own environment says nothing about the robot's); ``PythonExpression``/``$(eval)`` go through the
+safe evaluator. Every launch-configuration read is reported to ``on_read`` so rules can see reads
+of configurations that nothing defines.
+"""
+from __future__ import annotations
+
+import posixpath
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any, Callable
+
+from physai_lint.model import values as v
+from physai_lint.model.span import Span
+
+if TYPE_CHECKING:
+    from physai_lint.workspace import PackageIndex
+
+TRUE_WORDS = ("true", "1")
+FALSE_WORDS = ("false", "0")
+
+
+@dataclass
+class Scope:
+    """Launch configurations (``configs``) and locals, mirroring ``LaunchContext``.
+
+    ``configs`` maps names to a known string, ``None`` (defined, value unknown) or, for the special
+    keys ``ros_remaps`` and ``global_params``, to list objects that are *shared* between scopes the
+    way ``dict.copy()`` shares them in ``_push_launch_configurations`` (SEMANTICS §3).
+    """
+
+    configs: dict[str, Any] = field(default_factory=dict)
+    locals: dict[str, Any] = field(default_factory=dict)
+
+    def copy_configs(self) -> dict[str, Any]:
+        return dict(self.configs)
+
+
+ReadHook = Callable[[str, Span | None, bool, bool], None]  # name, span, defined, has_default
+PackageHook = Callable[[str, Span | None], None]
+
+
+def condition_truth(text: str) -> bool | None:
+    """``evaluate_condition_expression``: True/False, or None when the text is not a valid value."""
+    t = text.strip().lower()
+    if t in TRUE_WORDS:
+        return True
+    if t in FALSE_WORDS:
+        return False
+    return None
+
+
+def _as_bool_or_float(text: str) -> Any:
+    t = text.strip().lower()
+    if t in ("true", "false"):
+        return t == "true"
+    try:
+        return float(t)
+    except ValueError:
+        return text
+
+
+class Evaluator:
+    def __init__(
+        self,
+        packages: "PackageIndex | None",
+        on_read: ReadHook | None = None,
+        on_package: PackageHook | None = None,
+        on_bad_condition: Callable[[Span | None, str], None] | None = None,
+    ) -> None:
+        self.packages = packages
+        self.on_read = on_read
+        self.on_package = on_package
+        self.on_bad_condition = on_bad_condition
+        self.on_dirname: Callable[[Span | None, Scope], None] | None = None
+
+    def eval(self, value: v.Value | None, scope: Scope) -> str | None:
+        if value is None:
+            return None
+        out: list[str] = []
+        unknown = False
+        for part in value:
+            s = self._part(part, scope)
+            if s is None:
+                unknown = True  # keep evaluating: later parts may record reads
+            else:
+                out.append(s)
+        return None if unknown else "".join(out)
+
+    def _part(self, p: v.Subst, scope: Scope) -> str | None:  # noqa: C901 - a dispatch table
+        if isinstance(p, v.Text):
+            return p.text
+        if isinstance(p, v.LaunchConfig):
+            return self._config(p, scope)
+        if isinstance(p, v.FindPackage):
+            return self._find_package(p, scope)
+        if isinstance(p, v.PathJoin):
+            parts = [self.eval(x, scope) for x in p.parts]
+            if any(x is None for x in parts):
+                return None
+            return posixpath.join(*[x for x in parts if x is not None]) if parts else ""
+        if isinstance(p, v.ThisFileDir):
+            if self.on_dirname is not None:
+                self.on_dirname(p.span, scope)
+            d = scope.locals.get("current_launch_file_directory")
+            return d if isinstance(d, str) else None
+        if isinstance(p, v.ThisFile):
+            f = scope.locals.get("current_launch_file_path")
+            return f if isinstance(f, str) else None
+        if isinstance(p, v.ExecInPackage):
+            exe = self.eval(p.executable, scope)
+            pkg = self.eval(p.package, scope)
+            if pkg is not None and self.on_package:
+                self.on_package(pkg, p.span)
+            prefix = self.packages.prefix_dir(pkg) if (self.packages and pkg) else None
+            return posixpath.join(prefix, "lib", pkg or "", exe) if (prefix and exe and pkg) else None
+        if isinstance(p, v.PythonExpr):
+            return self._python_expr(p, scope)
+        if isinstance(p, v.BoolOp):
+            return self._bool_op(p, scope)
+        if isinstance(p, v.Compare):
+            left, right = self.eval(p.left, scope), self.eval(p.right, scope)
+            if left is None or right is None:
+                return None
+            equal = _as_bool_or_float(left) == _as_bool_or_float(right)
+            return str(equal if p.op == "equals" else not equal).lower()
+        if isinstance(p, v.IfElse):
+            cond = self.eval(p.condition, scope)
+            truth = condition_truth(cond) if cond is not None else None
+            if truth is None:
+                self.eval(p.if_value, scope)
+                self.eval(p.else_value, scope)
+                return None
+            return self.eval(p.if_value if truth else p.else_value, scope)
+        if isinstance(p, (v.EnvVar, v.ParamRef, v.FileContent, v.Anon)):
+            for sub in (getattr(p, "name", None), getattr(p, "default", None), getattr(p, "path", None)):
+                if sub is not None:
+                    self.eval(sub, scope)
+            return None
+        # Command, FindExecutable, Unknown: never known statically.
+        if isinstance(p, v.Command):
+            self.eval(p.command, scope)
+        return None
+
+    def _config(self, p: v.LaunchConfig, scope: Scope) -> str | None:
+        name = self.eval(p.name, scope)
+        if name is None:
+            return None
+        if name in scope.configs:
+            if self.on_read:
+                self.on_read(name, p.span, True, p.default is not None)
+            value = scope.configs[name]
+            return value if isinstance(value, str) else None
+        if self.on_read:
+            self.on_read(name, p.span, False, p.default is not None)
+        if p.default is not None:
+            return self.eval(p.default, scope)
+        return None
+
+    def _find_package(self, p: v.FindPackage, scope: Scope) -> str | None:
+        pkg = self.eval(p.package, scope)
+        if pkg is None:
+            return None
+        if self.on_package:
+            self.on_package(pkg, p.span)
+        if self.packages is None:
+            return None
+        if p.kind == "share":
+            return self.packages.share_dir(pkg)
+        return self.packages.prefix_dir(pkg)
+
+    def _python_expr(self, p: v.PythonExpr, scope: Scope) -> str | None:
+        expr = self.eval(p.expression, scope)
+        if expr is None:
+            return None
+        from physai_lint.resolve.safe_eval import SafeEvalUnknown, safe_eval
+
+        result = safe_eval(expr, p.modules)
+        if isinstance(result, SafeEvalUnknown):
+            return None
+        return str(result)
+
+    def _bool_op(self, p: v.BoolOp, scope: Scope) -> str | None:
+        vals: list[bool | None] = []
+        for operand in p.operands:
+            text = self.eval(operand, scope)
+            vals.append(None if text is None else self.truth(text, operand))
+        if p.op == "not":
+            return None if vals[0] is None else str(not vals[0]).lower()
+        if p.op in ("and", "all"):
+            if any(x is False for x in vals):
+                return "false"
+            return None if any(x is None for x in vals) else "true"
+        if any(x is True for x in vals):
+            return "true"
+        return None if any(x is None for x in vals) else "false"
+
+    def truth(self, text: str, value: v.Value | None) -> bool | None:
+        result = condition_truth(text)
+        if result is None and self.on_bad_condition:
+            self.on_bad_condition(v.span_of(value), text)
+        return result
+
+    def condition(self, kind: str, value: v.Value, scope: Scope) -> bool | None:
+        """``IfCondition``/``UnlessCondition``: whether the action runs (None: unknown)."""
+        text = self.eval(value, scope)
+        if text is None:
+            return None
+        truth = self.truth(text, value)
+        if truth is None:
+            return None
+        return truth if kind == "if" else not truth

@@ -1,0 +1,96 @@
+"""``IncludeLaunchDescription`` as launch executes it (``actions/include_launch_description.py``):
+arguments become launch configurations in the *includer's* scope, the required-argument check is
+"best effort" over the names passed, and the locals ``current_launch_file_directory``/``_path`` are
+set and never restored."""
+from __future__ import annotations
+
+import posixpath
+from dataclasses import replace
+from typing import TYPE_CHECKING, Iterator
+
+from physai_lint.model import launch as ir
+from physai_lint.resolve.evaluate import Scope
+from physai_lint.resolve.model import IncludeRecord
+
+if TYPE_CHECKING:
+    from physai_lint.resolve.instantiate import Instantiator
+
+MAX_INCLUDE_DEPTH = 40
+
+
+def declared_arguments(actions: tuple[ir.Action, ...], conditional: bool = False
+                       ) -> Iterator[tuple[ir.DeclareArgument, bool]]:
+    """Every ``DeclareLaunchArgument`` of a description (``get_launch_arguments``), with whether it
+    is conditionally included."""
+    for a in actions:
+        cond = conditional or a.condition is not None
+        if isinstance(a, ir.DeclareArgument):
+            yield a, cond
+        elif isinstance(a, ir.Group):
+            yield from declared_arguments(a.actions, cond)
+        elif isinstance(a, ir.OpaqueAction):
+            yield from declared_arguments(a.actions, True)
+
+
+def include(inst: "Instantiator", a: ir.Include, scope: Scope) -> None:
+    fr = inst.frame
+    path = inst.ev.eval(a.path, scope)
+    args: list[tuple[str, str | None, object]] = []
+    for arg in a.arguments or ():
+        args.append((arg.name, inst.ev.eval(arg.value, scope), arg.span))
+    rec = IncludeRecord(span=a.span, file=fr.file, target=path, target_source=None, status="unknown",
+                        arguments=args, declared=None, active=fr.active)  # type: ignore[arg-type]
+    inst.new_record(rec)
+    # The arguments are set in the includer's scope before the description is visited.
+    for name, value, _ in args:
+        scope.configs[name] = value
+    if path is None:
+        inst.result.opaque.append((a.span, "include of a file that cannot be known statically"))
+        return
+    located = inst.packages.locate(path) if inst.packages is not None else None
+    if located is None:
+        rec.status = "unknown"
+        return
+    rec.status = located.status
+    rec.target_source = located.source
+    if located.status != "ok" or located.source is None:
+        if located.status == "unknown":
+            inst.result.opaque.append((a.span, f'include of "{path}" outside the workspace'))
+        return
+    source = located.source
+    if source in fr.chain:
+        rec.status = "cycle"
+        rec.cycle = fr.chain[fr.chain.index(source):] + (source,)
+        return
+    if len(fr.chain) >= MAX_INCLUDE_DEPTH:
+        rec.status = "unparsed"
+        inst.result.opaque.append((a.span, f"include chain deeper than {MAX_INCLUDE_DEPTH} files"))
+        return
+    lf = inst.loader(source)
+    if lf is None:
+        rec.status = "unparsed"
+        inst.result.opaque.append((a.span, f'included file "{source}" could not be parsed'))
+        return
+    passed = {name for name, _, _ in args}
+    rec.required_missing = tuple(sorted({
+        d.name for d, conditional in declared_arguments(lf.actions)
+        if not conditional and d.default is None and d.name not in passed
+    }))
+    if source not in inst.result.files:
+        inst.result.files.append(source)
+    n_decl, n_reads, n_opaque = (len(inst.result.declared_args), len(inst.result.config_reads),
+                                 len(inst.result.opaque))
+    scope.locals["current_launch_file_directory"] = posixpath.dirname(path)
+    scope.locals["current_launch_file_path"] = path
+    scope.locals["_owner"] = source
+    inst.frame = replace(fr, file=source, chain=fr.chain + (source,), passed=frozenset(passed))
+    try:
+        inst._walk(lf.actions, scope)
+    finally:
+        inst.frame = fr
+    if len(inst.result.opaque) > n_opaque and a.arguments is not None:
+        rec.declared = None  # something below is unknown: it may read any argument
+    else:
+        names = {d.name for d in inst.result.declared_args[n_decl:]}
+        names |= {r.name for r in inst.result.config_reads[n_reads:]}
+        rec.declared = tuple(sorted(names))

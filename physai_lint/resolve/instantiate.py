@@ -1,0 +1,350 @@
+"""Walk the launch IR the way ``LaunchService`` visits entities (SEMANTICS §1-§4).
+
+Mirrored oddities: includes do not scope launch configurations; ``GroupAction`` copies the
+configuration dict shallowly, so ``SetRemap``/``SetParameter`` lists created in an outer scope leak
+out of scoped groups; timers and event handlers run after the description was processed, with the
+top-level configurations (they lose a group's namespace and remaps); ``$(dirname)`` after an include
+points at the included file's folder.
+"""
+from __future__ import annotations
+
+import posixpath
+from dataclasses import dataclass, field, replace
+from typing import TYPE_CHECKING, Any, Callable
+
+from physai_lint.model import launch as ir
+from physai_lint.model import values as v
+from physai_lint.model.span import Span
+from physai_lint.resolve import names
+from physai_lint.resolve.evaluate import Evaluator, Scope
+from physai_lint.resolve.model import (
+    ConfigRead, DeclaredArg, IncludeRecord, LaunchResult, StartEdge,
+)
+from physai_lint.resolve.nodes import NodeBuilder
+
+if TYPE_CHECKING:
+    from physai_lint.workspace import PackageIndex
+
+Loader = Callable[[str], "ir.LaunchFile | None"]
+MAX_INCLUDE_DEPTH = 40
+MAX_ACTIONS = 200_000
+
+REMAPS, PARAMS, NS = "ros_remaps", "global_params", "ros_namespace"
+
+
+@dataclass
+class Frame:
+    """Where the walker is: file, activity, include chain, group depth, deferred context."""
+
+    file: str
+    active: bool | None
+    chain: tuple[str, ...]
+    depth: int = 0  # scoped-group depth
+    deferred: str | None = None  # "timer" / event kind when run after the description
+    delay: float | None = 0.0
+    trigger: list[tuple[str, str, Span]] = field(default_factory=list)  # (action key, reason, span)
+    lost: tuple[str, ...] = ()
+    passed: frozenset[str] = frozenset()  # args the include that loaded this file passed
+
+
+def combine(a: bool | None, b: bool | None) -> bool | None:
+    if a is False or b is False:
+        return False
+    if a is None or b is None:
+        return None
+    return True
+
+
+class Instantiator:
+    def __init__(self, loader: Loader, packages: "PackageIndex | None", explicit_entry: bool) -> None:
+        self.loader = loader
+        self.packages = packages
+        self.explicit_entry = explicit_entry
+        self.result: LaunchResult
+        self.frame: Frame
+        self.budget = MAX_ACTIONS
+        self.deferred: list[tuple[tuple[ir.Action, ...], dict[str, Any], Frame]] = []
+        self.handlers: list[tuple[ir.EventHandler, Frame, dict[str, Any]]] = []
+        self.list_depth: dict[int, int] = {}
+        self.ev = Evaluator(packages, self._on_read, self._on_package, self._on_bad_condition)
+        self.ev.on_dirname = self._on_dirname
+        self.nodes = NodeBuilder(self)
+        self.visited: dict[str, bool | None] = {}
+
+    # ---- hooks -------------------------------------------------------------------------------
+    def _on_read(self, name: str, span: Span | None, defined: bool, has_default: bool) -> None:
+        if span is None:
+            return
+        self.result.config_reads.append(ConfigRead(name, span, defined, has_default, self.frame.active))
+        for arg in self.result.declared_args:
+            if arg.name == name:
+                arg.reads += 1
+
+    def _on_package(self, name: str, span: Span | None) -> None:
+        self.result.package_refs.append((name, span, self.frame.file))
+
+    def _on_dirname(self, span: Span | None, scope: Scope) -> None:
+        owner = scope.locals.get("_owner")
+        if span is not None and owner and owner != self.frame.file and self.frame.deferred is None:
+            got = scope.locals.get("current_launch_file_directory", "")
+            self.result.dirname_traps.append((span, str(got), posixpath.dirname(self.frame.file)))
+
+    def _on_bad_condition(self, span: Span | None, text: str) -> None:
+        if span is not None and self.frame.active is not False:
+            self.result.invalid_conditions.append((span, text))
+
+    # ---- entry -------------------------------------------------------------------------------
+    def run(self, entry: str, cli_args: dict[str, str]) -> LaunchResult:
+        self.result = LaunchResult(entry=entry, arguments=dict(cli_args))
+        scope = Scope(configs=dict(cli_args))
+        self.frame = Frame(entry, True, (entry,), passed=frozenset(cli_args))
+        lf = self.loader(entry)
+        if lf is None:
+            return self.result
+        self.result.files.append(entry)
+        scope.locals = {"current_launch_file_directory": posixpath.dirname(entry),
+                        "current_launch_file_path": entry, "_owner": entry}
+        self._walk(lf.actions, scope)
+        self._run_deferred(scope)
+        for arg in self.result.declared_args:
+            if arg.file == entry and arg.name not in self.result.arguments:
+                self.result.arguments[arg.name] = arg.value
+        self.nodes.finish()
+        return self.result
+
+    # ---- walking -----------------------------------------------------------------------------
+    def _walk(self, actions: tuple[ir.Action, ...], scope: Scope) -> None:
+        for action in actions:
+            self.budget -= 1
+            if self.budget < 0:
+                self.result.opaque.append((action.span, "too many actions: resolution stopped"))
+                return
+            self._visit(action, scope)
+
+    def _visit(self, a: ir.Action, scope: Scope) -> None:
+        outer = self.frame
+        active = outer.active
+        if a.condition is not None:
+            active = combine(active, self.ev.condition(a.condition.kind, a.condition.value, scope))
+        self.frame = replace(outer, active=active)
+        key = f"{outer.file}#{a.id}"
+        prev = self.visited.get(key, False)
+        self.visited[key] = True if (prev is True or self.frame.active is True) else (
+            None if (prev is None or self.frame.active is None) else False)
+        try:
+            if self.frame.active is False and outer.active is not False:
+                # Skipped by real launch: walk a throwaway copy so its nodes show as inactive.
+                shadow = Scope(configs=scope.copy_configs(), locals=dict(scope.locals))
+                self._dispatch(a, shadow)
+            else:
+                self._dispatch(a, scope)
+        finally:
+            self.frame = outer
+
+    def _dispatch(self, a: ir.Action, scope: Scope) -> None:  # noqa: C901 - one branch per action
+        if isinstance(a, ir.DeclareArgument):
+            self._declare(a, scope)
+        elif isinstance(a, ir.SetLaunchConfiguration):
+            name = self.ev.eval(a.name, scope)
+            value = self.ev.eval(a.value, scope)
+            if name is not None:
+                scope.configs[name] = value
+        elif isinstance(a, ir.Include):
+            self._include(a, scope)
+        elif isinstance(a, ir.Group):
+            self._group(a, scope)
+        elif isinstance(a, ir.ResetLaunchConfigurations):
+            keep = {}
+            for k, val in a.keep or ():
+                kn = self.ev.eval(k, scope)
+                if kn is not None:
+                    keep[kn] = self.ev.eval(val, scope)
+            scope.configs.clear()
+            scope.configs.update(keep)
+        elif isinstance(a, ir.PushNamespace):
+            self._push_namespace(a, scope)
+        elif isinstance(a, ir.SetRemap):
+            src, dst = self.ev.eval(a.src, scope), self.ev.eval(a.dst, scope)
+            self._append_global(scope, REMAPS, (src, dst, a.span, []), a.span, f'remap "{src}:={dst}"')
+            self.result.set_remaps.append((a.span, src, dst, scope.configs[REMAPS][-1][3]))
+        elif isinstance(a, ir.SetParameter):
+            name = self.ev.eval(a.name, scope)
+            self._append_global(scope, PARAMS, ("param", name, a.value, a.span), a.span,
+                                f'parameter "{name}"')
+        elif isinstance(a, ir.SetParametersFromFile):
+            self._append_global(scope, PARAMS, ("file", self.ev.eval(a.path, scope), a.path, a.span),
+                                a.span, "parameter file")
+        elif isinstance(a, ir.SetUseSimTime):
+            self.result.use_sim_time_actions.append(a.span)
+            self.ev.eval(a.value, scope)
+        elif isinstance(a, ir.NodeAction):
+            self.nodes.node(a, scope)
+        elif isinstance(a, ir.LoadComposableNodes):
+            self.nodes.load(a, scope)
+        elif isinstance(a, ir.ExecuteProcess):
+            self.nodes.process(a, scope)
+        elif isinstance(a, ir.Timer):
+            self._timer(a, scope)
+        elif isinstance(a, ir.EventHandler):
+            self.handlers.append((a, self.frame, dict(scope.locals)))
+        elif isinstance(a, ir.OpaqueAction):
+            if a.reason:
+                self.result.opaque.append((a.span, a.reason))
+            self._walk(a.actions, scope)
+        elif isinstance(a, (ir.Log, ir.Shutdown)):
+            for val in (getattr(a, "message", None), getattr(a, "reason", None)):
+                self.ev.eval(val, scope)
+        elif isinstance(a, ir.SetEnvironment):
+            self.ev.eval(a.name, scope)
+            self.ev.eval(a.value, scope)
+
+    # ---- arguments -----------------------------------------------------------------------------
+    def _declare(self, a: ir.DeclareArgument, scope: Scope) -> None:
+        default = self.ev.eval(a.default, scope) if a.default is not None else None
+        origin = "none"
+        if a.name in scope.configs:
+            val = scope.configs[a.name]
+            value = val if isinstance(val, str) else None
+            if a.name in self.frame.passed:
+                origin = "command-line" if self.frame.file == self.result.entry else "include"
+            else:
+                origin = "include"
+        elif a.default is not None:
+            value, origin = default, "default"
+            scope.configs[a.name] = default
+        else:
+            value = None
+            scope.configs[a.name] = None  # real launch raises; keep going with an unknown value
+        self.result.declared_args.append(DeclaredArg(
+            name=a.name, span=a.name_span or a.span, file=self.frame.file, default=default,
+            default_known=a.default is None or default is not None, has_default=a.default is not None,
+            choices=a.choices, value=value, value_origin=origin,  # type: ignore[arg-type]
+        ))
+
+    # ---- namespaces and global lists -------------------------------------------------------------
+    def _push_namespace(self, a: ir.PushNamespace, scope: Scope) -> None:
+        raw = self.ev.eval(a.namespace, scope)
+        base = scope.configs.get(NS)
+        if raw is None or (NS in scope.configs and base is None):
+            scope.configs[NS] = None
+            self.result.pushed_namespaces.append((a.span, raw, None))
+            return
+        new = names.make_namespace_absolute(names.prefix_namespace(base, raw))
+        scope.configs[NS] = new
+        self.result.pushed_namespaces.append((a.span, raw, new))
+
+    def _append_global(self, scope: Scope, key: str, item: Any, span: Span, what: str) -> None:
+        lst = scope.configs.get(key)
+        if not isinstance(lst, list):
+            lst = []
+            scope.configs[key] = lst
+            self.list_depth[id(lst)] = self.frame.depth
+        elif self.frame.depth > self.list_depth.get(id(lst), 0) and self.frame.deferred is None:
+            self.result.scope_leaks.append((span, what))
+        lst.append(item)
+
+    # ---- groups and includes ---------------------------------------------------------------------
+    def _group(self, a: ir.Group, scope: Scope) -> None:
+        sets = [(self.ev.eval(k, scope), self.ev.eval(val, scope)) for k, val in a.launch_configurations]
+        if not a.scoped:
+            for k, val in sets:
+                if k is not None:
+                    scope.configs[k] = val
+            self._walk(a.actions, scope)
+            return
+        saved = scope.configs
+        inner = dict(saved) if a.forwarding else {}
+        for k, val in sets:
+            if k is not None:
+                inner[k] = val
+        scope.configs = inner
+        self.frame.depth += 1
+        try:
+            self._walk(a.actions, scope)
+        finally:
+            self.frame.depth -= 1
+            scope.configs = saved
+
+    def _include(self, a: ir.Include, scope: Scope) -> None:
+        from physai_lint.resolve.includes import include
+
+        include(self, a, scope)
+
+    # ---- deferred: timers and event handlers -----------------------------------------------------
+    def _timer(self, a: ir.Timer, scope: Scope) -> None:
+        text = self.ev.eval(a.period, scope)
+        period: float | None = None
+        if text is not None:
+            try:
+                period = float(text)
+            except ValueError:
+                period = None
+        self.result.timers.append((a.span, period, text if text is not None else "unknown"))
+        lost = []
+        ns = scope.configs.get(NS)
+        if ns:
+            lost.append(f'namespace "{ns}"')
+        for item in scope.configs.get(REMAPS) or []:
+            lost.append(f'remap "{item[0]}:={item[1]}"')
+        delay = None if period is None or self.frame.delay is None else self.frame.delay + period
+        fr = replace(self.frame, deferred="timer", delay=delay, lost=tuple(lost),
+                     trigger=list(self.frame.trigger))
+        self.deferred.append((a.actions, dict(scope.locals), fr))
+
+    def _run_deferred(self, top: Scope) -> None:
+        rounds = 0
+        while (self.deferred or self.handlers) and rounds < 50:
+            rounds += 1
+            handlers, self.handlers = self.handlers, []
+            for h, fr, locals_ in handlers:
+                self._handler(h, fr, locals_, top)
+            deferred, self.deferred = self.deferred, []
+            for actions, locals_, fr in deferred:
+                scope = Scope(configs=top.configs, locals=locals_)
+                outer = self.frame
+                self.frame = replace(fr, depth=0)
+                try:
+                    self._walk(actions, scope)
+                finally:
+                    self.frame = outer
+
+    def _handler(self, h: ir.EventHandler, fr: Frame, locals_: dict[str, Any], top: Scope) -> None:
+        key = f"{fr.file}#{h.target_id}" if h.target_id else None
+        trigger = list(fr.trigger)
+        if key is not None and h.event in ("on_process_start", "on_process_exit",
+                                           "on_execution_complete", "on_state_transition"):
+            trigger.append((key, h.event, h.span))
+        self.nodes.watch(h, key, fr)
+        self.deferred.append((h.actions, locals_,
+                              replace(fr, deferred=h.event, trigger=trigger,
+                                      active=fr.active if h.event != "on_shutdown" else None)))
+
+    def add_edge(self, before: str, after: str, reason: str, span: Span, delay: float | None) -> None:
+        self.result.edges.append(StartEdge(before, after, reason, span, delay))
+
+    # ---- includes helpers used by resolve.includes ------------------------------------------------
+    def new_record(self, rec: IncludeRecord) -> None:
+        self.result.includes.append(rec)
+
+
+def resolve_launch(entry: str, cli_args: dict[str, str], loader: Loader,
+                   packages: "PackageIndex | None", explicit_entry: bool = True) -> LaunchResult:
+    """Resolve one entry launch file as ``ros2 launch`` would, with ``NAME:=VALUE`` arguments."""
+    return Instantiator(loader, packages, explicit_entry).run(entry, cli_args)
+
+
+def value_text(value: v.Value | None) -> str:
+    """A readable rendering of a value for messages (``$(var x)`` for unknown parts)."""
+    if value is None:
+        return ""
+    out = []
+    for p in value:
+        if isinstance(p, v.Text):
+            out.append(p.text)
+        elif isinstance(p, v.LaunchConfig):
+            out.append(f"$(var {value_text(p.name)})")
+        elif isinstance(p, v.FindPackage):
+            out.append(f"$(find-pkg-{p.kind} {value_text(p.package)})")
+        else:
+            out.append(f"$({type(p).__name__})")
+    return "".join(out)

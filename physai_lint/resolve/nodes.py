@@ -1,0 +1,265 @@
+"""Node, container, component and process instantiation (launch_ros ``Node._perform_substitutions``,
+``load_composable_nodes.get_composable_node_load_request``)."""
+from __future__ import annotations
+
+import re
+from typing import TYPE_CHECKING, Any
+
+from physai_lint.model import launch as ir
+from physai_lint.model import values as v
+from physai_lint.model.span import Span
+from physai_lint.resolve import names
+from physai_lint.resolve.evaluate import Scope
+from physai_lint.resolve.model import (
+    EffRemap, NodeInstance, ParamSourceR, ResolvedParam, ResolvedParamDict, ResolvedParamFile,
+    UnknownParams,
+)
+from physai_lint.resolve.params import rcl_cli_text, resolve_pvalue
+
+if TYPE_CHECKING:
+    from physai_lint.resolve.instantiate import Instantiator
+
+NS, REMAPS, PARAMS = "ros_namespace", "ros_remaps", "global_params"
+_NODE_OVERRIDE = re.compile(r"^__node:=(.+)$")
+_NS_OVERRIDE = re.compile(r"^__ns:=(.+)$")
+
+
+class NodeBuilder:
+    def __init__(self, inst: "Instantiator") -> None:
+        self.inst = inst
+        self.count = 0
+        self.by_action: dict[str, list[str]] = {}  # "<file>#<action id>" -> node ids
+        self.pending: list[tuple[str, str, str, Span, float | None]] = []  # key, node, reason, span, delay
+        self.watched: list[tuple[ir.EventHandler, str | None, str]] = []
+
+    # ---- helpers ------------------------------------------------------------------------------
+    def _id(self) -> str:
+        self.count += 1
+        return f"n{self.count}"
+
+    def _eval(self, value: v.Value | None, scope: Scope) -> tuple[str | None, bool]:
+        """(evaluated, given): given False when the field was not written at all."""
+        if value is None:
+            return None, False
+        return self.inst.ev.eval(value, scope), True
+
+    def _namespace(self, raw: str | None, given: bool, scope: Scope) -> tuple[str | None, bool]:
+        """(absolute namespace or None when unknown, whether launch specifies one)."""
+        if (given and raw is None) or (NS in scope.configs and scope.configs[NS] is None):
+            return None, True
+        combined = names.make_namespace_absolute(names.prefix_namespace(scope.configs.get(NS), raw))
+        return (combined, True) if combined is not None else ("/", False)
+
+    def _locate(self, path: str | None) -> tuple[str | None, str]:
+        if path is None:
+            return None, "unknown"
+        pk = self.inst.packages
+        if pk is None:
+            return None, "unknown"
+        loc = pk.locate(path)
+        return loc.source, loc.status
+
+    def _global_sources(self, scope: Scope, node_id: str) -> tuple[list[EffRemap], list[ParamSourceR]]:
+        remaps: list[EffRemap] = []
+        for src, dst, span, reached in scope.configs.get(REMAPS) or []:
+            remaps.append(EffRemap(src, dst, span, "global"))
+            reached.append(node_id)
+        params: list[ParamSourceR] = []
+        for item in scope.configs.get(PARAMS) or []:
+            if item[0] == "param":
+                _, name, pvalue, span = item
+                if name is None:
+                    params.append(UnknownParams("SetParameter with an unknown name", span))
+                    continue
+                rp = resolve_pvalue(name, pvalue, lambda x: self.inst.ev.eval(x, scope), span)
+                params.append(ResolvedParamDict((_cli_typed(rp),), span, "global", "/**"))
+            else:
+                _, path, _, span = item
+                source, status = self._locate(path)
+                params.append(ResolvedParamFile(path, source, status, span, "global"))  # type: ignore[arg-type]
+        return remaps, params
+
+    def _own_params(self, sources: tuple[ir.ParamSource, ...], scope: Scope, key: str
+                    ) -> list[ParamSourceR]:
+        out: list[ParamSourceR] = []
+        for src in sources:
+            if isinstance(src, ir.ParamFile):
+                path = self.inst.ev.eval(src.path, scope)
+                source, status = self._locate(path)
+                out.append(ResolvedParamFile(path, source, status, src.span, "node",  # type: ignore[arg-type]
+                                             src.allow_substs))
+            elif isinstance(src, ir.ParamDict):
+                params = tuple(resolve_pvalue(e.name, e.value, lambda x: self.inst.ev.eval(x, scope),
+                                              e.span) for e in src.entries)
+                out.append(ResolvedParamDict(params, src.span, "node", key))
+            else:
+                out.append(UnknownParams(src.reason, src.span))
+        return out
+
+    def _remaps(self, remappings: tuple[ir.Remapping, ...], scope: Scope) -> list[EffRemap]:
+        out = []
+        for r in remappings:
+            src, dst = self.inst.ev.eval(r.src, scope), self.inst.ev.eval(r.dst, scope)
+            prefix = None
+            if src is not None and ":" in src and not src.startswith("/"):
+                prefix, _, src = src.partition(":")
+            out.append(EffRemap(src, dst, r.span, "node", prefix))
+        return out
+
+    def _register(self, inst_: NodeInstance, key: str) -> None:
+        fr = self.inst.frame
+        self.inst.result.nodes.append(inst_)
+        self.by_action.setdefault(key, []).append(inst_.id)
+        if fr.deferred == "timer" or fr.delay not in (0.0,):
+            self.inst.result.delays[inst_.id] = fr.delay
+        for tkey, reason, span in fr.trigger:
+            self.pending.append((tkey, inst_.id, reason, span, fr.delay))
+
+    # ---- actions ------------------------------------------------------------------------------
+    def node(self, a: ir.NodeAction, scope: Scope) -> None:
+        fr = self.inst.frame
+        package, _ = self._eval(a.package, scope)
+        executable, _ = self._eval(a.executable, scope)
+        name, name_given = self._eval(a.name, scope)
+        ns_raw, ns_given = self._eval(a.namespace, scope)
+        args = tuple(self.inst.ev.eval(x, scope) for x in (a.arguments or ()))
+        ros_args = tuple(self.inst.ev.eval(x, scope) for x in (a.ros_arguments or ()))
+        # `-r __node:=x` / `__ns:=y` given by the user come first on the command line and win.
+        for text in (*args, *ros_args):
+            if text is None:
+                continue
+            if m := _NODE_OVERRIDE.match(text):
+                name, name_given = m.group(1), True
+            elif m := _NS_OVERRIDE.match(text):
+                ns_raw, ns_given = m.group(1), True
+        namespace, ns_specified = self._namespace(ns_raw, ns_given, scope)
+        if name_given and name is not None and "/" in name:
+            pass  # validated (and rejected) by the names rule; keep it for messages
+        fqn = names.join_fqn(namespace, name) if (namespace and name) else None
+        node_id = self._id()
+        remaps, gparams = self._global_sources(scope, node_id)
+        key = fqn if (name_given and ns_specified and fqn) else "/**"
+        params = gparams + self._own_params(a.parameters, scope, key)
+        remaps += self._remaps(a.remappings, scope)
+        inst_ = NodeInstance(
+            id=node_id, kind=a.kind, package=package, executable=executable, name=name,
+            namespace=namespace, fqn=fqn, active=fr.active, remaps=remaps, param_sources=params,
+            span=a.span, file=fr.file, action=a, action_id=f"{fr.file}#{a.id}",
+            include_chain=fr.chain[:-1], name_explicit=name_given, namespace_explicit=ns_specified,
+            arguments=args, in_timer=fr.deferred == "timer", timer_lost=fr.lost,
+            spans={k: s for k, s in a.field_spans},
+        )
+        self._register(inst_, inst_.action_id)
+        for cn in a.composable_nodes:
+            self.component(cn, scope, inst_.fqn, inst_.id, inst_.namespace, inst_.action_id)
+
+    def component(self, cn: ir.ComposableNode, scope: Scope, container: str | None,
+                  container_id: str | None, container_ns: str | None, key: str) -> None:
+        fr = self.inst.frame
+        active = fr.active
+        if cn.condition is not None:
+            from physai_lint.resolve.instantiate import combine
+
+            cond = self.inst.ev.condition(cn.condition.kind, cn.condition.value, scope)
+            active = combine(active, cond)
+        package, _ = self._eval(cn.package, scope)
+        plugin, _ = self._eval(cn.plugin, scope)
+        name, name_given = self._eval(cn.name, scope)
+        ns_raw, ns_given = self._eval(cn.namespace, scope)
+        namespace, specified = self._namespace(ns_raw, ns_given, scope)
+        if not specified:
+            namespace = container_ns  # forwarded global args: the container's -r __ns:=
+        fqn = names.join_fqn(namespace, name) if (namespace and name) else None
+        node_id = self._id()
+        remaps, gparams = self._global_sources(scope, node_id)
+        params = gparams + self._own_params(cn.parameters, scope, fqn or "/**")
+        inst_ = NodeInstance(
+            id=node_id, kind="composable_node", package=package, executable=plugin, name=name,
+            namespace=namespace, fqn=fqn, active=active, remaps=remaps + self._remaps(cn.remappings, scope),
+            param_sources=params, span=cn.span, file=fr.file, action=cn,
+            action_id=f"{fr.file}#{cn.id or cn.span.line}", include_chain=fr.chain[:-1],
+            name_explicit=name_given, namespace_explicit=specified, container=container,
+            container_id=container_id,
+        )
+        self.inst.result.nodes.append(inst_)
+        if container_id is not None:
+            self.inst.add_edge(container_id, node_id, "container", cn.span, None)
+
+    def load(self, a: ir.LoadComposableNodes, scope: Scope) -> None:
+        container: str | None = None
+        container_id: str | None = None
+        container_ns: str | None = None
+        if a.target_id is not None:
+            key = f"{self.inst.frame.file}#{a.target_id}"
+            ids = self.by_action.get(key, [])
+            if ids:
+                node = self._node(ids[-1])
+                container, container_id, container_ns = node.fqn, node.id, node.namespace
+        elif a.target is not None:
+            text = self.inst.ev.eval(a.target, scope)
+            if text is not None:
+                container = names.make_namespace_absolute(text)
+                for n in self.inst.result.nodes:
+                    if n.kind == "container" and n.fqn == container:
+                        container_id, container_ns = n.id, n.namespace
+        for cn in a.nodes:
+            self.component(cn, scope, container, container_id, container_ns,
+                           f"{self.inst.frame.file}#{a.id}")
+
+    def process(self, a: ir.ExecuteProcess, scope: Scope) -> None:
+        fr = self.inst.frame
+        cmd = tuple(self.inst.ev.eval(x, scope) for x in (a.cmd or ()))
+        executable = cmd[0] if cmd else None
+        inst_ = NodeInstance(
+            id=self._id(), kind="process", package=None, executable=executable, name=None,
+            namespace=None, fqn=None, active=fr.active, remaps=[], param_sources=[], span=a.span,
+            file=fr.file, action=None, action_id=f"{fr.file}#{a.id}", include_chain=fr.chain[:-1],
+            arguments=cmd[1:], in_timer=fr.deferred == "timer",
+        )
+        self._register(inst_, inst_.action_id)
+
+    def watch(self, h: ir.EventHandler, key: str | None, fr: Any) -> None:
+        if key is not None:
+            self.watched.append((h, key, fr.file))
+
+    def _node(self, node_id: str) -> NodeInstance:
+        for n in self.inst.result.nodes:
+            if n.id == node_id:
+                return n
+        raise KeyError(node_id)
+
+    def finish(self) -> None:
+        res = self.inst.result
+        for key, after, reason, span, delay in self.pending:
+            for before in self.by_action.get(key, []):
+                res.edges.append(_edge(before, after, reason, span, delay))
+        opaque_files = {s.file for s, _ in res.opaque}
+        for h, key, file in self.watched:
+            assert key is not None
+            seen = self.inst.visited.get(key, "never")
+            if file in opaque_files:
+                continue
+            if seen == "never":
+                res.never_started.append((h.span, f"its target action is never added to the launch description ({h.event})"))
+            elif seen is False:
+                res.never_started.append((h.span, f"its target action is disabled by its condition ({h.event})"))
+
+
+def _edge(before: str, after: str, reason: str, span: Span, delay: float | None) -> Any:
+    from physai_lint.resolve.model import StartEdge
+
+    return StartEdge(before, after, reason, span, delay)
+
+
+def _cli_typed(rp: ResolvedParam) -> ResolvedParam:
+    """``SetParameter`` goes through ``-p name:=str(value)``: rcl types that text again."""
+    text = rcl_cli_text(rp.value)
+    if text is None:
+        return rp
+    try:
+        from physai_lint.params.typing import rcl_type_scalar
+
+        _, value = rcl_type_scalar(text, False, None, "humble")
+    except Exception:  # the params package is optional for this conversion
+        return rp
+    return ResolvedParam(rp.name, value, rp.span, text, "yaml")

@@ -1,0 +1,92 @@
+"""Launch-side parameter typing (SEMANTICS §4a, launch_ros ``normalize_parameters`` and
+``evaluate_parameter_dict``): Python literals keep their type (a ``str`` is ``yaml.dump``-ed and
+re-loaded, so it stays a string), substitution values are evaluated and typed by PyYAML."""
+from __future__ import annotations
+
+from typing import Any, Callable
+
+from physai_lint.model import values as v
+from physai_lint.resolve.model import ParamValue, ResolvedParam
+
+MAX_YAML_TEXT = 100_000
+
+
+def yaml_type(text: str) -> ParamValue:
+    """What ``yaml.safe_load`` makes of an evaluated substitution string; None when launch rejects it."""
+    if text == "":
+        return ""
+    if len(text) > MAX_YAML_TEXT or "&" in text or "*" in text and "[" in text:
+        return text if "\n" not in text else None
+    import yaml
+
+    loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+    try:
+        value = yaml.load(text, Loader=loader)  # noqa: S506 - a safe loader over a short string
+    except yaml.YAMLError:
+        return None
+    return _plain(value)
+
+
+def _plain(value: Any) -> ParamValue:
+    if isinstance(value, (bool, int, float, str)):
+        return value
+    if isinstance(value, (list, tuple)) and value:
+        first = type(value[0])
+        if first in (bool, int, float, str) and all(type(x) is first for x in value):
+            return list(value)
+    return None
+
+
+def _normalize_list(items: tuple[Any, ...]) -> ParamValue:
+    kinds = {type(x) for x in items}
+    if not items:
+        return None
+    if kinds == {int}:
+        return [int(x) for x in items]
+    if kinds <= {int, float}:
+        return [float(x) for x in items]
+    if kinds == {bool}:
+        return [bool(x) for x in items]
+    if kinds == {str}:
+        return [str(x) for x in items]
+    return [str(x) for x in items]  # mixed: yaml.dump-ed into strings
+
+
+def resolve_pvalue(
+    name: str, pv: v.PValue, evaluate: Callable[[v.Value], str | None], span: Any
+) -> ResolvedParam:
+    if isinstance(pv, v.PLit):
+        value = pv.value
+        if isinstance(value, tuple):
+            return ResolvedParam(name, _normalize_list(value), span, None, "python")
+        if isinstance(value, bytes):
+            return ResolvedParam(name, None, span, None, "python")
+        return ResolvedParam(name, value, span, None, "python")
+    if isinstance(pv, v.PSubst):
+        text = evaluate(pv.value)
+        if text is None:
+            return ResolvedParam(name, None, span, None, "yaml")
+        if pv.sep is not None:
+            parts = text.split(pv.sep)
+            if pv.value_type == "str":
+                return ResolvedParam(name, parts, span, text, "forced")
+            typed = [yaml_type(x) for x in parts]
+            return ResolvedParam(name, _plain(typed), span, text, "yaml")
+        if pv.value_type == "str":
+            return ResolvedParam(name, text, span, text, "forced")
+        return ResolvedParam(name, yaml_type(text), span, text, "yaml")
+    if isinstance(pv, v.PList):
+        items = [resolve_pvalue(name, item, evaluate, span).value for item in pv.items]
+        if any(x is None or isinstance(x, list) for x in items):
+            return ResolvedParam(name, None, span, None, "python")
+        return ResolvedParam(name, _normalize_list(tuple(items)), span, None, "python")
+    return ResolvedParam(name, None, span, None, "python")
+
+
+def rcl_cli_text(value: ParamValue) -> str | None:
+    """``-p name:=str(value)`` as ``SetParameter`` writes it (a list becomes its Python repr)."""
+    if value is None:
+        return None
+    if isinstance(value, list):
+        return repr(tuple(value))
+    return str(value)

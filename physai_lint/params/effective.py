@@ -1,0 +1,249 @@
+"""The parameters a node ends up with, and where each value came from (SEMANTICS.md §4).
+
+Regular nodes (§4b): every params file and dict of the node is merged into one ``rcl_params_t``
+(``RclParams``) in command-line order: node keys and entries keep their first-insertion position;
+resolution walks the node keys in that order and every matching key overwrites earlier values.
+Composable nodes (§4a): launch_ros reads the files with PyYAML; only ``/**`` and the exact key
+count, the exact key beats ``/**`` within a file, and the last value wins across sources.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any, Mapping
+
+from physai_lint.model.span import Span
+from physai_lint.resolve.model import (
+    ParamSourceR,
+    ResolvedParam,
+    ResolvedParamDict,
+    ResolvedParamFile,
+    UnknownParams,
+)
+
+from .match import composable_key_matches, is_universal_key, key_matches
+from .model import NodeBlock, ParamFileModel
+from .rcl import RclParams, Write
+from .typing import launch_dump_retype, pyyaml_kind
+
+
+@dataclass(frozen=True, slots=True)
+class Blame:
+    span: Span | None
+    source_desc: str
+    value: Any
+    overridden: bool
+    kind: str | None = None
+    node_key: str | None = None
+
+
+@dataclass
+class EffectiveParam:
+    """``value``/``kind`` are what the node reads (``kind`` "not_set" for an empty array, ``None``
+    with ``value`` None when unknown). ``chain`` lists every write to the parameter under a
+    matching key, in resolution order; all but the winner are ``overridden``. ``certain`` is
+    False when an unknown source (unknown file, unknown dict, unknown node name) may change it."""
+
+    name: str
+    value: Any
+    kind: str | None
+    origin: Span | None
+    chain: list[Blame] = field(default_factory=list)
+    certain: bool = True
+    node_key: str | None = None
+
+
+def _file_for(src: ResolvedParamFile, files: Mapping[str, ParamFileModel]) -> ParamFileModel | None:
+    for p in (src.path, src.source):
+        if p and p in files:
+            return files[p]
+    return None
+
+
+def _launch_slot(value: Any, distro: str) -> tuple[str, Any] | None:
+    """How rcl reads a launch dict value after launch_ros dumps it to a temporary YAML file."""
+    if isinstance(value, bool):
+        return "bool", value
+    if isinstance(value, int):
+        return "integer", value
+    if isinstance(value, float):
+        return "double", value
+    if isinstance(value, str):
+        return launch_dump_retype(value, distro)
+    if isinstance(value, bytes):
+        return "byte_array", list(value)
+    if isinstance(value, (list, tuple)):
+        if not value:
+            return None
+        items = []
+        for v in value:
+            s = _launch_slot(v, distro)
+            if s is None:
+                return None
+            items.append(s)
+        kinds = {k for k, _ in items}
+        if kinds == {"integer", "double"}:
+            return "double_array", [float(v) for _, v in items]
+        if len(kinds) != 1:
+            return "unknown", None
+        return f"{items[0][0]}_array", [v for _, v in items]
+    return "unknown", None
+
+
+def _feed_dict(rcl: RclParams, src: ResolvedParamDict, distro: str) -> None:
+    rcl.find_node(src.key, src.span, "launch parameters")
+    for prm in src.params:
+        rcl.find_parameter(prm.name, None, "launch parameters")
+        if prm.value is None:
+            rcl.set("unknown", None, None, _dict_desc(prm), prm.span, unknown=True)
+            continue
+        slot = _launch_slot(prm.value, distro)
+        if slot is None:
+            continue  # empty list: nothing written (rclcpp: "No parameter value set")
+        kind, value = slot
+        rcl.set(kind, value, None, _dict_desc(prm), prm.span, unknown=(kind == "unknown"))
+
+
+def _dict_desc(prm: ResolvedParam) -> str:
+    return f"launch parameter \"{prm.name}\""
+
+
+def effective_parameters(node_fqn: str | None, sources: list[ParamSourceR],
+                         files: Mapping[str, ParamFileModel], composable: bool = False,
+                         distro: str = "humble") -> dict[str, EffectiveParam]:
+    if composable:
+        return _effective_composable(node_fqn, sources, files)
+    rcl = RclParams()
+    uncertain = False
+    for src in sources:
+        if isinstance(src, ResolvedParamFile):
+            if src.status == "missing":
+                continue  # launch drops it with a warning
+            model = _file_for(src, files)
+            if model is None:
+                uncertain = True
+                continue
+            rcl.apply(model.ops, model.path)
+        elif isinstance(src, ResolvedParamDict):
+            _feed_dict(rcl, src, distro)
+        elif isinstance(src, UnknownParams):
+            uncertain = True
+    out: dict[str, EffectiveParam] = {}
+    winners: dict[str, Write | None] = {}
+    chains: dict[str, list[tuple[Write, str]]] = {}
+    uncertain_names: set[str] = set()
+    for key, node in rcl.nodes.items():
+        if node_fqn is None:
+            if not is_universal_key(key):
+                uncertain_names.update(e.name for e in node.entries)
+                continue
+        elif not key_matches(key, node_fqn):
+            continue
+        for entry in node.entries:
+            w = entry.read()
+            winners[entry.name] = w
+            chains.setdefault(entry.name, []).extend((x, key) for x in entry.writes)
+            out[entry.name] = EffectiveParam(entry.name, None, None, None, node_key=key)
+    for name, ep in out.items():
+        w = winners[name]
+        chain = []
+        for x, key in chains.get(name, []):
+            chain.append(Blame(x.span, x.source, x.value, x is not w,
+                               None if x.unknown else x.slot, key))
+        ep.chain = chain
+        if w is None:
+            ep.kind = "not_set"
+            ep.value = None
+        elif w.unknown:
+            ep.kind = None
+            ep.value = None
+            ep.certain = False
+        else:
+            ep.kind = w.slot
+            ep.value = w.value
+            ep.origin = w.span
+        if uncertain or name in uncertain_names:
+            ep.certain = False
+    return out
+
+
+def _launch_kind(value: Any) -> str | None:
+    k = pyyaml_kind(value)
+    if k in ("bool", "integer", "double", "string"):
+        return k
+    if k == "list":
+        if not value:
+            return "not_set"
+        kinds = {pyyaml_kind(v) for v in value}
+        if kinds == {"integer", "double"}:
+            return "double_array"
+        if len(kinds) == 1 and next(iter(kinds)) in ("bool", "integer", "double", "string"):
+            return f"{next(iter(kinds))}_array"
+    return None
+
+
+def _effective_composable(fqn: str | None, sources: list[ParamSourceR],
+                          files: Mapping[str, ParamFileModel]) -> dict[str, EffectiveParam]:
+    out: dict[str, EffectiveParam] = {}
+    uncertain = False
+
+    def put(name: str, value: Any, kind: str | None, span: Span | None, desc: str,
+            key: str | None) -> None:
+        ep = out.get(name)
+        if ep is None:
+            ep = out[name] = EffectiveParam(name, value, kind, span, node_key=key)
+        else:
+            ep.chain = [Blame(b.span, b.source_desc, b.value, True, b.kind, b.node_key)
+                        for b in ep.chain]
+            ep.value, ep.kind, ep.origin, ep.node_key = value, kind, span, key
+        ep.chain.append(Blame(span, desc, value, False, kind, key))
+        if kind is None:
+            ep.certain = False
+
+    for src in sources:
+        if isinstance(src, ResolvedParamFile):
+            if src.status == "missing":
+                continue
+            model = _file_for(src, files)
+            if model is None:
+                uncertain = True
+                continue
+            blocks = matching_keys(fqn, model, composable=True) if fqn is not None else [
+                b for b in model.blocks if b.key.lstrip("/") == "**" and not b.nested
+                and b.params_key_exact]
+            if fqn is None and any(not b.nested and b.key.lstrip("/") != "**" and "*" not in b.key
+                                   for b in model.blocks):
+                uncertain = True
+            # within one file the exact key beats "**" whatever their order
+            ordered = [b for b in blocks if b.key.lstrip("/") == "**"] + \
+                      [b for b in blocks if b.key.lstrip("/") != "**"]
+            for b in ordered:
+                for prm in b.params:
+                    put(prm.name, prm.launch_value, _launch_kind(prm.launch_value),
+                        prm.value_span, model.path, b.key)
+        elif isinstance(src, ResolvedParamDict):
+            for prm in src.params:
+                v = prm.value
+                kind = None if v is None else _launch_kind(v)
+                if isinstance(v, float) and math.isnan(v):
+                    kind = "double"
+                put(prm.name, v, kind, prm.span, _dict_desc(prm), src.key)
+        elif isinstance(src, UnknownParams):
+            uncertain = True
+    if uncertain:
+        for ep in out.values():
+            ep.certain = False
+    return out
+
+
+def matching_keys(fqn: str, model: ParamFileModel, composable: bool = False) -> list[NodeBlock]:
+    """The blocks of ``model`` that apply to the node ``fqn``, in file order."""
+    if composable:
+        return [b for b in model.blocks
+                if b.params_key_exact and composable_key_matches(b.key, fqn, b.nested)]
+    return [b for b in model.blocks if key_matches(b.key, fqn)]
+
+
+def file_binds(fqn: str, model: ParamFileModel, composable: bool = False) -> bool:
+    """Does any block of the file apply to the node?"""
+    return bool(matching_keys(fqn, model, composable))

@@ -1,0 +1,55 @@
+"""PythonExpression / $(eval) strings are interpreted, never executed, and always bounded."""
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2]))  # tests run without an install
+
+import math  # noqa: E402
+
+import pytest  # noqa: E402
+
+from physai_lint.resolve.safe_eval import SafeEvalUnknown, safe_eval  # noqa: E402
+
+
+@pytest.mark.parametrize("expr, expected", [
+    ("1 + 2 * 3", 7), ("7 // 2", 3), ("7 % 4", 3), ("2 ** 10", 1024), ("-3 + +1", -2),
+    ("'true' == 'true'", True), ("1 < 2 < 3", True), ("1 < 3 < 2", False),
+    ("'a' in 'abc'", True), ("'x' not in ['a', 'b']", True),
+    ("True and not False", True), ("0 or 'x'", "x"), ("'a' if 1 > 2 else 'b'", "b"),
+    ("'Sim'.lower()", "sim"), ("' x '.strip()", "x"), ("'a_b'.split('_')", ["a", "b"]),
+    ("'/'.join(['a', 'b'])", "a/b"), ("'{}-{}'.format('a', 2)", "a-2"),
+    ("'abc'.startswith('a')", True), ("'abc'.replace('b', 'x')", "axc"),
+    ("len('abcd')", 4), ("int('3') + float('0.5')", 3.5), ("str(5)", "5"), ("bool(0)", False),
+    ("abs(-2)", 2), ("min(3, 1)", 1), ("max([1, 9])", 9), ("round(2.567, 2)", 2.57),
+    ("math.pi", math.pi), ("math.sqrt(16)", 4.0), ("sqrt(9)", 3.0), ("pi / 2", math.pi / 2),
+    ("[1, 2][1]", 2), ("(1, 2)", (1, 2)), ("{'a': 1}['a']", 1), ("'abc'[1:]", "bc"),
+    ("None", None),
+])
+def test_evaluates(expr: str, expected: object) -> None:
+    assert safe_eval(expr) == expected
+
+
+@pytest.mark.parametrize("expr", [
+    "__import__('os').system('true')", "open('/etc/passwd')", "(1).__class__",
+    "[x for x in 'ab']", "lambda: 1", "exec('1')", "'{0.__class__}'.format(1)",
+    "undefined_name", "os.getcwd()", "'%s' % 1", "1/0", "1 +",
+])
+def test_refuses(expr: str) -> None:
+    assert isinstance(safe_eval(expr), SafeEvalUnknown)
+
+
+@pytest.mark.parametrize("expr", [
+    "9 ** 9 ** 9", "'a' * 10 ** 7", "[0] * 10 ** 7", "10 ** 600000 * 10 ** 600000",
+    "str([[1] * 10 ** 6] * 10 ** 6)", "('x' * 10 ** 6).replace('x', 'xx')",
+    "'{:>99999999}'.format(1)", "-" * 200 + "1", "(" * 500 + "1" + ")" * 500,
+    "1 + " * 5000 + "1",
+])
+def test_bounded(expr: str) -> None:
+    assert isinstance(safe_eval(expr), SafeEvalUnknown)
+
+
+def test_math_module_needed_for_math_names() -> None:
+    assert isinstance(safe_eval("math.pi", modules=()), SafeEvalUnknown)
+    assert isinstance(safe_eval("sqrt(4)", modules=("os",)), SafeEvalUnknown)

@@ -1,0 +1,139 @@
+"""``--format text``: what a person reads in a terminal.
+
+    launch/robot.launch.py:12:18: N101 [duplicate-node-name] duplicate node name "/talker"
+       |
+    12 |     Node(package="demo", name="talker"),
+       |                               ^^^^^^^^
+       = help: give one of the nodes another name
+       = note: launch/robot.launch.py:8:31: first defined here
+
+Colour is decided by the caller (``color=True`` only on a TTY without ``NO_COLOR``).
+"""
+from __future__ import annotations
+
+import io
+from collections import Counter
+from typing import Any, Callable, Mapping
+
+from physai_lint.model.findings import Finding
+from physai_lint.report import ReportLike, counts, ordered, plural, rel
+
+SourceReader = Callable[[str], "str | None"]
+_SEVERITY_STYLE = {"error": "bold red", "warning": "bold yellow", "note": "bold cyan"}
+
+
+def read_file(path: str) -> str | None:
+    try:
+        with open(path, encoding="utf-8", errors="replace") as fh:
+            return fh.read()
+    except OSError:
+        return None
+
+
+def render(
+    report: ReportLike,
+    catalog: Mapping[str, Any],
+    *,
+    color: bool = False,
+    show_source: bool = True,
+    statistics: bool = False,
+    quiet: bool = False,
+    read_source: SourceReader | None = None,
+    **_: Any,
+) -> str:
+    from rich.console import Console
+    from rich.text import Text
+
+    buf = io.StringIO()
+    console = Console(
+        file=buf,
+        force_terminal=color,
+        no_color=not color,
+        color_system="standard" if color else None,
+        highlight=False,
+        soft_wrap=True,
+        emoji=False,
+        markup=False,
+        width=100,
+    )
+    findings = ordered(report)
+    if statistics:
+        _statistics(console, findings)
+    else:
+        lines_of = _source_cache(read_source or read_file)
+        for f in findings:
+            _finding(console, f, report.cwd, lines_of if show_source else None, Text)
+    if not quiet:
+        console.print(Text(summary(report, findings), style="bold" if findings else "bold green"))
+    return buf.getvalue()
+
+
+def summary(report: ReportLike, findings: list[Finding]) -> str:
+    n_files = len(report.files)
+    suppressed = (
+        f" ({plural(report.baseline_suppressed, 'finding')} hidden by the baseline)" if report.baseline_suppressed else ""
+    )
+    if not findings:
+        return f"All checks passed! ({plural(n_files, 'file')}){suppressed}"
+    c = counts(findings)
+    notes = f" ({plural(c['note'], 'note')})" if c["note"] else ""
+    return f"Found {plural(c['error'], 'error')}, {plural(c['warning'], 'warning')}{notes} in {plural(n_files, 'file')}.{suppressed}"
+
+
+def _source_cache(reader: SourceReader) -> Callable[[str], list[str] | None]:
+    cache: dict[str, list[str] | None] = {}
+
+    def lines_of(path: str) -> list[str] | None:
+        if path not in cache:
+            text = reader(path)
+            cache[path] = None if text is None else text.splitlines()
+        return cache[path]
+
+    return lines_of
+
+
+def _finding(console: Any, f: Finding, cwd: str, lines_of: Callable[[str], list[str] | None] | None, Text: Any) -> None:
+    head = Text()
+    head.append(f"{rel(f.span.file, cwd)}:{f.span.line}:{f.span.col}:", style="bold")
+    head.append(" ")
+    head.append(f.code, style=_SEVERITY_STYLE[f.severity])
+    head.append(f" [{f.name}]", style="dim")
+    head.append(f" {f.message}")
+    console.print(head)
+    lines = lines_of(f.span.file) if lines_of else None
+    gutter = len(str(f.span.line))
+    if lines is not None and 1 <= f.span.line <= len(lines):
+        source = lines[f.span.line - 1].rstrip("\r\n")
+        start = min(f.span.col, len(source) + 1)
+        end = f.span.end_col if f.span.end_line == f.span.line else len(source) + 1
+        width = max(end - start, 1)
+        pad = "".join(ch if ch == "\t" else " " for ch in source[: start - 1])
+        bar = " " * gutter + " |"
+        console.print(Text(bar, style="blue"))
+        line = Text(f"{f.span.line} | ", style="blue")
+        line.append(source)
+        console.print(line)
+        marks = Text(bar + " ", style="blue")
+        marks.append(pad + "^" * width, style=_SEVERITY_STYLE[f.severity])
+        console.print(marks)
+    indent = " " * gutter + " = " if lines is not None else "  = "
+    if f.help:
+        console.print(Text(indent).append("help", style="bold").append(f": {f.help}"))
+    for r in f.related:
+        where = f"{rel(r.span.file, cwd)}:{r.span.line}:{r.span.col}"
+        console.print(Text(indent).append("note", style="bold").append(f": {where}: {r.message}"))
+    console.print()
+
+
+def _statistics(console: Any, findings: list[Finding]) -> None:
+    from rich import box
+    from rich.table import Table
+
+    by_code = Counter((f.code, f.name, f.severity) for f in findings)
+    table = Table(box=box.SIMPLE_HEAD, show_edge=False, pad_edge=False)
+    for header, justify in (("count", "right"), ("code", "left"), ("name", "left"), ("severity", "left")):
+        table.add_column(header, justify=justify)  # type: ignore[arg-type]
+    for (code, name, severity), n in sorted(by_code.items(), key=lambda kv: (-kv[1], kv[0])):
+        table.add_row(str(n), code, name, severity)
+    if findings:
+        console.print(table)

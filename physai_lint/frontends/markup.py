@@ -6,17 +6,42 @@ positions; ``build_launch_file`` maps tags to actions following SEMANTICS §5.
 from __future__ import annotations
 
 import re
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
-from typing import Callable, Literal, Sequence
+from typing import Literal
 
 from physai_lint.frontends.substitutions import parse_substitutions
 from physai_lint.model.findings import Diagnostic
 from physai_lint.model.launch import (
-    Action, ComposableNode, Condition, DeclareArgument, ExecuteProcess, Group, Include,
-    IncludeArgument, LaunchFile, LoadComposableNodes, Log, MarkupFacts, NodeAction, OpaqueAction,
-    ParamDict, ParamEntry, ParamFile, ParamSource, PushNamespace, Remapping,
-    ResetLaunchConfigurations, SetEnvironment, SetLaunchConfiguration, SetParameter,
-    SetParametersFromFile, SetRemap, SetUseSimTime, Shutdown, Timer,
+    Action,
+    ComposableNode,
+    Condition,
+    DeclareArgument,
+    ExecuteProcess,
+    Group,
+    Include,
+    IncludeArgument,
+    LaunchFile,
+    LoadComposableNodes,
+    Log,
+    MarkupFacts,
+    NodeAction,
+    OpaqueAction,
+    ParamDict,
+    ParamEntry,
+    ParamFile,
+    ParamSource,
+    PushNamespace,
+    Remapping,
+    ResetLaunchConfigurations,
+    SetEnvironment,
+    SetLaunchConfiguration,
+    SetParameter,
+    SetParametersFromFile,
+    SetRemap,
+    SetUseSimTime,
+    Shutdown,
+    Timer,
 )
 from physai_lint.model.span import Span
 from physai_lint.model.values import PList, PLit, PSubst, PValue, PyScalar, Text, Value, literal_of
@@ -38,7 +63,7 @@ class Attr:
     positions: Sequence[tuple[int, int]] | None = None
     is_str: bool = True
     typed: Scalar | tuple[object, ...] = None
-    items: tuple["Attr", ...] = ()
+    items: tuple[Attr, ...] = ()
 
 
 @dataclass
@@ -46,7 +71,7 @@ class Element:
     tag: str
     span: Span
     attrs: dict[str, Attr] = field(default_factory=dict)
-    children: list["Element"] = field(default_factory=list)
+    children: list[Element] = field(default_factory=list)
     parent: str | None = None
 
 

@@ -10,15 +10,31 @@ from __future__ import annotations
 
 import difflib
 import re
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import Callable, Sequence
 
 from physai_lint.model.findings import Diagnostic
 from physai_lint.model.span import Span
 from physai_lint.model.values import (
-    Anon, BoolOp, Command, Compare, EnvVar, ExecInPackage, FileContent, FindExecutable,
-    FindPackage, IfElse, LaunchConfig, ParamRef, PythonExpr, Subst, Text, ThisFile, ThisFileDir,
-    Unknown, Value,
+    Anon,
+    BoolOp,
+    Command,
+    Compare,
+    EnvVar,
+    ExecInPackage,
+    FileContent,
+    FindExecutable,
+    FindPackage,
+    IfElse,
+    LaunchConfig,
+    ParamRef,
+    PythonExpr,
+    Subst,
+    Text,
+    ThisFile,
+    ThisFileDir,
+    Unknown,
+    Value,
 )
 
 # name -> (min args, max args or None for unbounded)

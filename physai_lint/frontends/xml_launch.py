@@ -17,7 +17,7 @@ from physai_lint.model.findings import Diagnostic
 from physai_lint.model.span import Span
 
 _TAG = re.compile(r"<([^\s/>]+)")
-_ATTR = re.compile(r"""\s*([^\s=/>]+)\s*=\s*(?:"([^"]*)"|'([^']*)')""", re.S)
+_ATTR = re.compile(r"""\s*([^\s=/>]+)\s*=\s*(?:"([^"]*)"|'([^']*)')""", re.DOTALL)
 _REF = re.compile(r"&(#x[0-9a-fA-F]+|#[0-9]+|[A-Za-z_][\w.-]*);")
 _NAMED = {"lt": "<", "gt": ">", "amp": "&", "quot": '"', "apos": "'"}
 

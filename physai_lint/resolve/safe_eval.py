@@ -11,8 +11,9 @@ import ast
 import math
 import operator
 import re
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any, Callable
+from typing import Any
 
 MAX_EXPR_CHARS = 10_000
 MAX_ELEMENTS = 10**6

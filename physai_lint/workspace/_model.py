@@ -1,0 +1,49 @@
+"""Data read statically from a package's build files."""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Literal
+
+
+@dataclass(frozen=True)
+class InstallRule:
+    """One install statement, normalised. ``dest`` is relative to the install prefix
+    (``share/<pkg>/launch``); ``source`` is an absolute ``/`` path, or ``None`` when it could not be
+    known (a generated file, an unknown variable): then everything below ``dest`` is unknown.
+
+    kind "file": ``source`` installs as ``dest/<rename or basename>``.
+    kind "directory": ``source`` installs as ``dest/<basename>/...``, or its contents as
+    ``dest/...`` when ``contents_only`` (a trailing slash). ``patterns``/``excludes`` are CMake
+    ``PATTERN`` globs on file names (``files_matching``: only files matching a pattern install)."""
+
+    kind: Literal["file", "directory"]
+    dest: str
+    source: str | None
+    line: int
+    origin: str  # the build file path
+    rename: str | None = None
+    contents_only: bool = False
+    files_matching: bool = False
+    patterns: tuple[str, ...] = ()
+    excludes: tuple[str, ...] = ()
+
+
+@dataclass
+class BuildInfo:
+    """What a package installs. ``complete`` is False when something could not be evaluated
+    statically (then "not installed" verdicts would be guesses and ``locate`` says "unknown")."""
+
+    executables: set[str] = field(default_factory=set)  # installed to lib/<pkg>
+    executables_in_bin: set[str] = field(default_factory=set)  # console scripts without setup.cfg
+    plugins: set[str] = field(default_factory=set)
+    rules: list[InstallRule] = field(default_factory=list)
+    # executable or plugin -> parameter YAML files (absolute paths)
+    parameter_yamls: dict[str, list[str]] = field(default_factory=dict)
+    # generate_parameter_module: (module name, yaml absolute path)
+    parameter_modules: list[tuple[str, str]] = field(default_factory=list)
+    python_packages: set[str] = field(default_factory=set)
+    registers_in_index: bool = True
+    complete: bool = True
+    executables_complete: bool = True  # False: an executable list we could not fully read
+    project_name: str | None = None
+    problems: list[tuple[str, str, int]] = field(default_factory=list)  # (path, message, line)

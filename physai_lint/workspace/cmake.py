@@ -1,0 +1,600 @@
+"""A small CMake reader: tokenises CMakeLists.txt (comments, quoted and bracket arguments, nested
+parentheses) and interprets the handful of commands that decide what a package installs. Variables
+are expanded from ``project()``, ``set()``, ``list(APPEND)`` and ``foreach()``; anything else is
+"unknown" (``\\x00``), and rules built from unknown values cover their destination as unknown."""
+from __future__ import annotations
+
+import os
+import re
+from dataclasses import dataclass
+
+from ._model import BuildInfo, InstallRule
+
+UNKNOWN = "\x00"
+_PREFIX = "\x01PREFIX"
+_MAX_SUBDIRS = 32
+
+
+@dataclass(frozen=True)
+class Arg:
+    value: str
+    quoted: bool
+    line: int
+
+
+@dataclass(frozen=True)
+class Command:
+    name: str  # lower-case
+    args: tuple[Arg, ...]
+    line: int
+
+
+_IDENT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+_BRACKET_OPEN = re.compile(r"\[(=*)\[")
+
+
+def tokenize(text: str) -> list[Command]:
+    """Split CMake source into commands. Malformed input never raises: the rest is dropped."""
+    cmds: list[Command] = []
+    i, n, line = 0, len(text), 1
+
+    def skip_bracket(pos: int) -> int | None:
+        m = _BRACKET_OPEN.match(text, pos)
+        if not m:
+            return None
+        close = "]" + m.group(1) + "]"
+        end = text.find(close, m.end())
+        return n if end < 0 else end + len(close)
+
+    while i < n:
+        c = text[i]
+        if c == "\n":
+            line += 1
+            i += 1
+        elif c in " \t\r":
+            i += 1
+        elif c == "#":
+            end = skip_bracket(i + 1)
+            if end is not None:
+                line += text.count("\n", i, end)
+                i = end
+            else:
+                j = text.find("\n", i)
+                i = n if j < 0 else j
+        else:
+            m = _IDENT.match(text, i)
+            if not m:
+                i += 1
+                continue
+            name, cmd_line = m.group(0).lower(), line
+            j = m.end()
+            while j < n and text[j] in " \t":
+                j += 1
+            if j >= n or text[j] != "(":
+                i = j
+                continue
+            i = j + 1
+            args: list[Arg] = []
+            depth = 0
+            while i < n:
+                c = text[i]
+                if c == "\n":
+                    line += 1
+                    i += 1
+                elif c in " \t\r":
+                    i += 1
+                elif c == "(":
+                    depth += 1
+                    args.append(Arg("(", False, line))
+                    i += 1
+                elif c == ")":
+                    if depth == 0:
+                        i += 1
+                        break
+                    depth -= 1
+                    args.append(Arg(")", False, line))
+                    i += 1
+                elif c == "#":
+                    end = skip_bracket(i + 1)
+                    if end is not None:
+                        line += text.count("\n", i, end)
+                        i = end
+                    else:
+                        k = text.find("\n", i)
+                        i = n if k < 0 else k
+                elif c == '"':
+                    start_line = line
+                    buf: list[str] = []
+                    i += 1
+                    while i < n and text[i] != '"':
+                        ch = text[i]
+                        if ch == "\\" and i + 1 < n:
+                            nxt = text[i + 1]
+                            if nxt == "\n":
+                                line += 1
+                            else:
+                                buf.append({"n": "\n", "t": "\t", "r": "\r", ";": "\\;"}.get(nxt, nxt))
+                            i += 2
+                            continue
+                        if ch == "\n":
+                            line += 1
+                        buf.append(ch)
+                        i += 1
+                    i += 1
+                    args.append(Arg("".join(buf), True, start_line))
+                elif c == "[" and _BRACKET_OPEN.match(text, i):
+                    m2 = _BRACKET_OPEN.match(text, i)
+                    assert m2 is not None
+                    end = skip_bracket(i)
+                    assert end is not None
+                    close_len = len(m2.group(1)) + 2
+                    body = text[m2.end() : max(m2.end(), end - close_len)]
+                    if body.startswith("\n"):
+                        body = body[1:]
+                    args.append(Arg(body, True, line))
+                    line += text.count("\n", i, end)
+                    i = end
+                else:
+                    start = i
+                    buf2: list[str] = []
+                    while i < n and text[i] not in ' \t\r\n()#"':
+                        if text[i] == "\\" and i + 1 < n:
+                            buf2.append(text[i : i + 2] if text[i + 1] == ";" else text[i + 1])
+                            i += 2
+                            continue
+                        if text[i] == "$" and i + 1 < n and text[i + 1] == "{":
+                            # keep ${...} intact even if it holds spaces/quotes
+                            k = text.find("}", i)
+                            if k < 0:
+                                k = n - 1
+                            buf2.append(text[i : k + 1])
+                            i = k + 1
+                            continue
+                        buf2.append(text[i])
+                        i += 1
+                    if i == start:
+                        i += 1
+                        continue
+                    args.append(Arg("".join(buf2), False, line))
+            cmds.append(Command(name, tuple(args), cmd_line))
+    return cmds
+
+
+_VAR_RX = re.compile(r"\$\{([^${}]*)\}")
+_ENV_RX = re.compile(r"\$ENV\{[^}]*\}")
+
+
+class _Interp:
+    def __init__(self, pkg_dir: str, pkg_name: str, info: BuildInfo) -> None:
+        self.pkg_dir = pkg_dir
+        self.pkg_name = pkg_name
+        self.info = info
+        self.vars: dict[str, str] = {
+            "PROJECT_NAME": pkg_name,
+            "CMAKE_INSTALL_PREFIX": _PREFIX,
+            "CMAKE_INSTALL_BINDIR": "bin",
+            "CMAKE_INSTALL_LIBDIR": "lib",
+            "CMAKE_INSTALL_DATADIR": "share",
+            "CMAKE_INSTALL_INCLUDEDIR": "include",
+            "CMAKE_CURRENT_BINARY_DIR": UNKNOWN,
+            "CMAKE_BINARY_DIR": UNKNOWN,
+            "PROJECT_BINARY_DIR": UNKNOWN,
+        }
+        self.functions: dict[str, list[Command]] = {}
+        self.exes: set[str] = set()
+        self.libs: set[str] = set()
+        self.auto_exes: set[str] = set()
+        self.links: dict[str, set[str]] = {}
+        self.param_libs: dict[str, str | None] = {}
+        self.plugin_targets: dict[str, str] = {}
+        self.subdirs = 0
+        self.auto_package = False
+
+    # -- values ---------------------------------------------------------------------------------
+
+    def expand(self, s: str) -> str:
+        if "$" not in s:
+            return s
+        s = _ENV_RX.sub(UNKNOWN, s)
+        for _ in range(20):
+            new = _VAR_RX.sub(lambda m: self.vars.get(m.group(1), UNKNOWN) if UNKNOWN not in m.group(1) else UNKNOWN, s)
+            if new == s:
+                break
+            s = new
+        if "$<" in s:
+            s = UNKNOWN
+        return s
+
+    def args(self, cmd: Command) -> list[str]:
+        out: list[str] = []
+        for a in cmd.args:
+            v = self.expand(a.value)
+            if a.quoted:
+                out.append(v)
+            elif v == "":
+                continue
+            else:
+                out.extend(p.replace("\\;", ";") for p in re.split(r"(?<!\\);", v) if p != "")
+        return out
+
+    def src_path(self, p: str) -> str | None:
+        if UNKNOWN in p or _PREFIX in p:
+            return None
+        cur = self.vars["CMAKE_CURRENT_SOURCE_DIR"]
+        path = p if os.path.isabs(p) else os.path.join(cur, p)
+        trailing = p.endswith("/")
+        norm = os.path.normpath(path).replace(os.sep, "/")
+        return norm + ("/" if trailing else "")
+
+    def dest(self, d: str) -> str | None:
+        if UNKNOWN in d:
+            return None
+        if d.startswith(_PREFIX):
+            d = d[len(_PREFIX) :]
+        if _PREFIX in d or os.path.isabs(d):
+            return None
+        d = os.path.normpath(d).replace(os.sep, "/")
+        return "" if d == "." else d
+
+    # -- commands -------------------------------------------------------------------------------
+
+    def run(self, cmds: list[Command], origin: str, depth: int = 0) -> None:
+        i = 0
+        while i < len(cmds):
+            cmd = cmds[i]
+            name = cmd.name
+            if name in ("foreach", "function", "macro"):
+                end = {"foreach": "endforeach", "function": "endfunction", "macro": "endmacro"}[name]
+                body, i = _block(cmds, i, name, end)
+                if name == "foreach":
+                    self.foreach(cmd, body, origin, depth)
+                else:
+                    a = self.args(cmd)
+                    if a:
+                        self.functions[a[0].lower()] = body
+                continue
+            try:
+                self.command(cmd, origin, depth)
+            except Exception as exc:  # a reader bug must not hide the package
+                self.info.complete = False
+                self.info.problems.append((origin, f"could not read {name}(): {exc}", cmd.line))
+            i += 1
+
+    def foreach(self, head: Command, body: list[Command], origin: str, depth: int) -> None:
+        a = self.args(head)
+        if not a:
+            return
+        var, rest = a[0], a[1:]
+        items: list[str] = []
+        if rest and rest[0] == "RANGE":
+            if any(c.name == "install" for c in body):
+                self.info.complete = self.info.executables_complete = False
+            return
+        if rest and rest[0] == "IN":
+            mode = None
+            for tok in rest[1:]:
+                if tok in ("LISTS", "ITEMS", "ZIP_LISTS"):
+                    mode = tok
+                elif mode == "LISTS":
+                    val = self.vars.get(tok, "")
+                    items.extend(p for p in val.split(";") if p)
+                elif mode == "ITEMS":
+                    items.append(tok)
+        else:
+            items = rest
+        saved = self.vars.get(var)
+        for item in items:
+            self.vars[var] = item
+            self.run(body, origin, depth)
+        if saved is None:
+            self.vars.pop(var, None)
+        else:
+            self.vars[var] = saved
+
+    def command(self, cmd: Command, origin: str, depth: int) -> None:
+        name = cmd.name
+        if name == "project":
+            a = self.args(cmd)
+            if a and UNKNOWN not in a[0]:
+                self.vars["PROJECT_NAME"] = a[0]
+                self.info.project_name = a[0]
+        elif name == "set":
+            a = self.args(cmd)
+            if not a:
+                return
+            vals = a[1:]
+            for stop in ("CACHE", "PARENT_SCOPE"):
+                if stop in vals:
+                    vals = vals[: vals.index(stop)]
+            self.vars[a[0]] = ";".join(vals)
+        elif name == "list":
+            a = self.args(cmd)
+            if len(a) >= 2 and a[0] in ("APPEND", "PREPEND"):
+                cur = [p for p in self.vars.get(a[1], "").split(";") if p]
+                cur = cur + a[2:] if a[0] == "APPEND" else a[2:] + cur
+                self.vars[a[1]] = ";".join(cur)
+        elif name in ("add_executable", "ament_auto_add_executable"):
+            a = self.args(cmd)
+            if a and "IMPORTED" not in a and "ALIAS" not in a:
+                self.exes.add(a[0])
+                if name == "ament_auto_add_executable":
+                    self.auto_exes.add(a[0])
+        elif name in ("add_library", "ament_auto_add_library"):
+            a = self.args(cmd)
+            if a:
+                self.libs.add(a[0])
+        elif name == "target_link_libraries":
+            a = self.args(cmd)
+            if a:
+                kw = {"PUBLIC", "PRIVATE", "INTERFACE", "LINK_PUBLIC", "LINK_PRIVATE", "LINK_INTERFACE_LIBRARIES", "debug", "optimized", "general"}
+                self.links.setdefault(a[0], set()).update(x for x in a[1:] if x not in kw)
+        elif name == "generate_parameter_library":
+            a = self.args(cmd)
+            if len(a) >= 2:
+                p = self.src_path(a[1])
+                self.param_libs[a[0]] = p.rstrip("/") if p else None
+                self.libs.add(a[0])
+        elif name == "rclcpp_components_register_node":
+            a = self.args(cmd)
+            if not a:
+                return
+            plugin = _kwarg(a, "PLUGIN")
+            exe = _kwarg(a, "EXECUTABLE")
+            if plugin and UNKNOWN not in plugin:
+                self.info.plugins.add(plugin)
+                self.plugin_targets[plugin] = a[0]
+            if exe and UNKNOWN not in exe:
+                self.info.executables.add(exe)
+                self.links.setdefault(exe, set()).add(a[0])
+        elif name == "rclcpp_components_register_nodes":
+            a = self.args(cmd)
+            if a:
+                for cls in a[1:]:
+                    if cls == "RESOURCE_INDEX":
+                        break
+                    if UNKNOWN not in cls:
+                        self.info.plugins.add(cls)
+                        self.plugin_targets[cls] = a[0]
+        elif name == "install":
+            self.install(cmd, origin)
+        elif name == "ament_python_install_package":
+            a = self.args(cmd)
+            if a:
+                self.info.python_packages.add(a[0])
+        elif name == "ament_auto_package":
+            self.auto_package = True
+            a = self.args(cmd)
+            if "INSTALL_TO_SHARE" in a:
+                for d in a[a.index("INSTALL_TO_SHARE") + 1 :]:
+                    if d.isupper() and d.replace("_", "").isalpha():
+                        break
+                    src = self.src_path(d)
+                    self.add_rule("directory", f"share/{self.pkg_name}", src, cmd.line, origin,
+                                  contents_only=False)
+            self.ament_package(cmd, origin)
+        elif name == "ament_package":
+            self.ament_package(cmd, origin)
+        elif name == "add_subdirectory":
+            a = self.args(cmd)
+            if not a or depth > 4 or self.subdirs >= _MAX_SUBDIRS:
+                return
+            sub = self.src_path(a[0])
+            if sub is None:
+                self.info.complete = False
+                return
+            sub = sub.rstrip("/")
+            path = os.path.join(sub, "CMakeLists.txt")
+            text = _read(path)
+            if text is None:
+                return
+            self.subdirs += 1
+            saved = self.vars["CMAKE_CURRENT_SOURCE_DIR"]
+            self.vars["CMAKE_CURRENT_SOURCE_DIR"] = sub
+            self.vars["CMAKE_CURRENT_LIST_DIR"] = sub
+            self.run(tokenize(text), path.replace(os.sep, "/"), depth + 1)
+            self.vars["CMAKE_CURRENT_SOURCE_DIR"] = saved
+            self.vars["CMAKE_CURRENT_LIST_DIR"] = saved
+        elif name in self.functions:
+            if any(c.name == "install" for c in self.functions[name]):
+                self.info.complete = False
+                self.info.executables_complete = False
+
+    def ament_package(self, cmd: Command, origin: str) -> None:
+        self.add_rule("file", f"share/{self.pkg_name}", self.pkg_dir + "/package.xml", cmd.line, origin)
+
+    def add_rule(self, kind: str, dest: str | None, source: str | None, line: int, origin: str,
+                 **kw: object) -> None:
+        if dest is None:
+            self.info.complete = False
+            return
+        contents_only = bool(kw.pop("contents_only", False))
+        if source is not None and kind == "directory":
+            contents_only = contents_only or source.endswith("/")
+            source = source.rstrip("/")
+        self.info.rules.append(InstallRule(kind=kind, dest=dest, source=source, line=line,  # type: ignore[arg-type]
+                                           origin=origin, contents_only=contents_only, **kw))  # type: ignore[arg-type]
+
+    def install(self, cmd: Command, origin: str) -> None:
+        a = self.args(cmd)
+        if not a:
+            return
+        mode = a[0]
+        lib_dest = f"lib/{self.pkg_name}"
+        if mode == "TARGETS":
+            kws = {"EXPORT", "ARCHIVE", "LIBRARY", "RUNTIME", "OBJECTS", "FRAMEWORK", "BUNDLE",
+                   "PRIVATE_HEADER", "PUBLIC_HEADER", "RESOURCE", "DESTINATION", "INCLUDES",
+                   "PERMISSIONS", "CONFIGURATIONS", "COMPONENT", "OPTIONAL", "NAMELINK_ONLY",
+                   "NAMELINK_SKIP", "FILE_SET", "CXX_MODULES_BMI", "EXCLUDE_FROM_ALL"}
+            targets: list[str] = []
+            k = 1
+            while k < len(a) and a[k] not in kws:
+                targets.append(a[k])
+                k += 1
+            runtime_to_lib = False
+            section = None
+            while k < len(a):
+                tok = a[k]
+                if tok in ("ARCHIVE", "LIBRARY", "RUNTIME", "OBJECTS", "FRAMEWORK", "BUNDLE",
+                           "PRIVATE_HEADER", "PUBLIC_HEADER", "RESOURCE", "INCLUDES"):
+                    section = tok
+                elif tok == "DESTINATION" and k + 1 < len(a):
+                    d = self.dest(a[k + 1])
+                    if d == lib_dest and section in (None, "RUNTIME"):
+                        runtime_to_lib = True
+                    k += 1
+                k += 1
+            if runtime_to_lib:
+                for t in targets:
+                    if UNKNOWN in t:
+                        self.info.executables_complete = False
+                    elif t not in self.libs:
+                        self.info.executables.add(t)
+        elif mode in ("PROGRAMS", "FILES"):
+            files, opts = _split_opts(a[1:], {"DESTINATION", "TYPE", "PERMISSIONS", "CONFIGURATIONS",
+                                              "COMPONENT", "RENAME", "OPTIONAL", "EXCLUDE_FROM_ALL"})
+            dest = self.dest(opts["DESTINATION"][0]) if opts.get("DESTINATION") else None
+            if dest is None and opts.get("TYPE"):
+                dest = {"BIN": "bin", "DATA": "share", "SYSCONF": "etc", "LIB": "lib"}.get(opts["TYPE"][0])
+            rename = opts["RENAME"][0] if opts.get("RENAME") else None
+            for f in files:
+                src = self.src_path(f)
+                self.add_rule("file", dest, src, cmd.line, origin, rename=rename)
+                if mode == "PROGRAMS" and dest == lib_dest:
+                    exe = rename or os.path.basename(f)
+                    if UNKNOWN in exe:
+                        self.info.executables_complete = False
+                    else:
+                        self.info.executables.add(exe)
+        elif mode == "DIRECTORY":
+            dirs: list[str] = []
+            k = 1
+            stop = {"DESTINATION", "TYPE", "FILE_PERMISSIONS", "DIRECTORY_PERMISSIONS",
+                    "USE_SOURCE_PERMISSIONS", "OPTIONAL", "MESSAGE_NEVER", "CONFIGURATIONS",
+                    "COMPONENT", "EXCLUDE_FROM_ALL", "FILES_MATCHING", "PATTERN", "REGEX"}
+            while k < len(a) and a[k] not in stop:
+                dirs.append(a[k])
+                k += 1
+            dest: str | None = None
+            files_matching = False
+            patterns: list[str] = []
+            excludes: list[str] = []
+            has_regex = False
+            while k < len(a):
+                tok = a[k]
+                if tok == "DESTINATION" and k + 1 < len(a):
+                    dest = self.dest(a[k + 1])
+                    k += 1
+                elif tok == "FILES_MATCHING":
+                    files_matching = True
+                elif tok in ("PATTERN", "REGEX") and k + 1 < len(a):
+                    pat = a[k + 1]
+                    excl = k + 2 < len(a) and a[k + 2] == "EXCLUDE"
+                    if tok == "REGEX":
+                        has_regex = True
+                    elif excl:
+                        excludes.append(pat)
+                    else:
+                        patterns.append(pat)
+                    k += 2 if excl else 1
+                k += 1
+            if has_regex:
+                self.info.complete = False
+            for d in dirs:
+                self.add_rule("directory", dest, self.src_path(d), cmd.line, origin,
+                              files_matching=files_matching, patterns=tuple(patterns),
+                              excludes=tuple(excludes))
+
+    def finish(self) -> None:
+        if self.auto_package:
+            self.info.executables.update(self.auto_exes)
+        # parameter libraries reachable from each executable / plugin target, transitively
+        def reach(target: str) -> list[str]:
+            out: list[str] = []
+            seen: set[str] = set()
+            stack = [target]
+            while stack:
+                t = stack.pop()
+                if t in seen:
+                    continue
+                seen.add(t)
+                if t in self.param_libs and t != target:
+                    p = self.param_libs[t]
+                    if p:
+                        out.append(p)
+                stack.extend(sorted(self.links.get(t, ())))
+            return sorted(set(out))
+
+        for exe in sorted(self.exes | self.info.executables):
+            ys = reach(exe)
+            if ys:
+                self.info.parameter_yamls[exe] = ys
+        for plugin, target in self.plugin_targets.items():
+            ys = reach(target) + ([self.param_libs[target]] if self.param_libs.get(target) else [])
+            if ys:
+                self.info.parameter_yamls[plugin] = sorted(set(y for y in ys if y))
+
+
+def _block(cmds: list[Command], i: int, start: str, end: str) -> tuple[list[Command], int]:
+    depth = 0
+    body: list[Command] = []
+    j = i + 1
+    while j < len(cmds):
+        c = cmds[j]
+        if c.name == start:
+            depth += 1
+        elif c.name == end:
+            if depth == 0:
+                return body, j + 1
+            depth -= 1
+        body.append(c)
+        j += 1
+    return body, j
+
+
+def _kwarg(a: list[str], key: str) -> str | None:
+    if key in a:
+        k = a.index(key)
+        if k + 1 < len(a):
+            return a[k + 1]
+    return None
+
+
+def _split_opts(a: list[str], keys: set[str]) -> tuple[list[str], dict[str, list[str]]]:
+    items: list[str] = []
+    opts: dict[str, list[str]] = {}
+    cur: str | None = None
+    for tok in a:
+        if tok in keys:
+            cur = tok
+            opts.setdefault(tok, [])
+        elif cur is None:
+            items.append(tok)
+        else:
+            opts[cur].append(tok)
+    return items, opts
+
+
+def _read(path: str) -> str | None:
+    try:
+        with open(path, encoding="utf-8", errors="replace") as fh:
+            return fh.read()
+    except OSError:
+        return None
+
+
+def read_cmake_package(pkg_dir: str, pkg_name: str, text: str | None = None) -> BuildInfo:
+    """Read ``<pkg_dir>/CMakeLists.txt`` statically into a ``BuildInfo``."""
+    info = BuildInfo()
+    path = pkg_dir + "/CMakeLists.txt"
+    if text is None:
+        text = _read(path)
+    if text is None:
+        info.complete = info.executables_complete = False
+        info.problems.append((path, "CMakeLists.txt not found", 1))
+        return info
+    interp = _Interp(pkg_dir, pkg_name, info)
+    interp.vars.update(CMAKE_CURRENT_SOURCE_DIR=pkg_dir, PROJECT_SOURCE_DIR=pkg_dir,
+                       CMAKE_SOURCE_DIR=pkg_dir, CMAKE_CURRENT_LIST_DIR=pkg_dir)
+    interp.run(tokenize(text), path)
+    interp.finish()
+    return info

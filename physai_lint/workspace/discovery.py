@@ -1,0 +1,290 @@
+"""Finding launch files, parameter files and package manifests below the paths given on the
+command line, the way colcon and ``ros2 launch`` would see them (no subprocess, no git binary)."""
+from __future__ import annotations
+
+import os
+import stat
+from dataclasses import dataclass, field
+
+from ._glob import compile_glob
+
+IGNORE_MARKERS = ("COLCON_IGNORE", "AMENT_IGNORE", "CATKIN_IGNORE")
+SKIP_DIRS = frozenset({"build", "install", "log", "__pycache__"})
+LAUNCH_SUFFIXES = ("launch.py", "launch.xml", "launch.yaml")
+YAML_SUFFIXES = (".yaml", ".yml")
+PARAM_SNIFF_LIMIT = 10 * 1024 * 1024
+
+
+class UsageError(Exception):
+    """A command-line usage problem (exit code 2). ``message`` is one line."""
+
+    def __init__(self, message: str) -> None:
+        super().__init__(message)
+        self.message = message
+
+
+@dataclass
+class Discovery:
+    """Absolute, ``/``-separated, sorted paths. ``explicit`` are the files named on the command line
+    (kept even when an ignore rule would hide them)."""
+
+    launch_files: list[str] = field(default_factory=list)
+    param_files: list[str] = field(default_factory=list)
+    package_xmls: list[str] = field(default_factory=list)
+    explicit: list[str] = field(default_factory=list)
+
+
+def is_launch_file(name: str) -> bool:
+    """ros2launch ``is_launch_file``: ``x.launch.py`` and ``x_launch.py`` both count."""
+    return name.endswith(LAUNCH_SUFFIXES)
+
+
+def _norm(path: str) -> str:
+    return os.path.normpath(os.path.abspath(path)).replace(os.sep, "/")
+
+
+def sniff_param_file(path: str) -> bool:
+    """Does a YAML file mention ``ros__parameters``? Files over 10 MB are not read."""
+    try:
+        if os.path.getsize(path) > PARAM_SNIFF_LIMIT:
+            return False
+        with open(path, "rb") as fh:
+            return b"ros__parameters" in fh.read()
+    except OSError:
+        return False
+
+
+def has_ignore_marker(dirpath: str, names: set[str] | None = None) -> bool:
+    if names is not None:
+        return any(m in names for m in IGNORE_MARKERS)
+    return any(os.path.exists(os.path.join(dirpath, m)) for m in IGNORE_MARKERS)
+
+
+def skip_dir_name(name: str) -> bool:
+    return name.startswith(".") or name in SKIP_DIRS
+
+
+# ---- .gitignore ---------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class _GitRule:
+    base: str  # directory of the .gitignore (absolute, "/")
+    regex: object
+    negate: bool
+    dir_only: bool
+
+
+def _parse_gitignore(base: str, text: str) -> list[_GitRule]:
+    rules: list[_GitRule] = []
+    for raw in text.splitlines():
+        line = raw.rstrip("\n\r")
+        if not line or line.startswith("#"):
+            continue
+        # trailing spaces are ignored unless escaped
+        while line.endswith(" ") and not line.endswith("\\ "):
+            line = line[:-1]
+        if not line:
+            continue
+        negate = False
+        if line.startswith("!"):
+            negate, line = True, line[1:]
+        elif line.startswith("\\!") or line.startswith("\\#"):
+            line = line[1:]
+        dir_only = line.endswith("/")
+        line = line.rstrip("/")
+        if not line:
+            continue
+        anchored = "/" in line
+        line = line.lstrip("/")
+        pat = line if anchored else "**/" + line
+        rules.append(_GitRule(base, compile_glob(pat, True), negate, dir_only))
+    return rules
+
+
+class GitIgnore:
+    """The common subset of gitignore: per-directory ``.gitignore`` files plus
+    ``.git/info/exclude``, negation, anchoring, ``**``, directory-only patterns. Last match wins."""
+
+    def __init__(self) -> None:
+        self._root_cache: dict[str, str | None] = {}
+        self._rules_cache: dict[str, list[_GitRule]] = {}
+
+    def git_root(self, dirpath: str) -> str | None:
+        if dirpath in self._root_cache:
+            return self._root_cache[dirpath]
+        found: str | None = None
+        if os.path.exists(os.path.join(dirpath, ".git")):
+            found = dirpath
+        else:
+            parent = os.path.dirname(dirpath)
+            found = self.git_root(parent) if parent != dirpath else None
+        self._root_cache[dirpath] = found
+        return found
+
+    def _rules_of(self, dirpath: str, root: str) -> list[_GitRule]:
+        if dirpath in self._rules_cache:
+            return self._rules_cache[dirpath]
+        rules: list[_GitRule] = []
+        if dirpath != root:
+            rules.extend(self._rules_of(os.path.dirname(dirpath), root))
+        else:
+            rules.extend(_read_rules(root, os.path.join(root, ".git", "info", "exclude")))
+        rules.extend(_read_rules(dirpath, os.path.join(dirpath, ".gitignore")))
+        self._rules_cache[dirpath] = rules
+        return rules
+
+    def ignored(self, path: str, is_dir: bool) -> bool:
+        """Is ``path`` (absolute, normalised) ignored by the rules of the directories above it?"""
+        parent = os.path.dirname(path)
+        root = self.git_root(parent)
+        if root is None:
+            return False
+        result = False
+        for rule in self._rules_of(parent, root):
+            if rule.dir_only and not is_dir:
+                continue
+            rel = os.path.relpath(path, rule.base).replace(os.sep, "/")
+            if rel.startswith(".."):
+                continue
+            if rule.regex.match(rel):  # type: ignore[attr-defined]
+                result = not rule.negate
+        return result
+
+
+def _read_rules(base: str, path: str) -> list[_GitRule]:
+    try:
+        with open(path, encoding="utf-8", errors="replace") as fh:
+            return _parse_gitignore(base.replace(os.sep, "/"), fh.read())
+    except OSError:
+        return []
+
+
+# ---- walking ------------------------------------------------------------------------------------
+
+
+def discover(paths: list[str], respect_gitignore: bool = True) -> Discovery:
+    """Launch files, parameter files and package.xml files below ``paths`` (files or dirs).
+
+    Directories holding COLCON_IGNORE/AMENT_IGNORE/CATKIN_IGNORE are skipped with everything below,
+    as are build/, install/, log/ and dot-directories; symlinked directories are followed once
+    (by real path). A missing path raises ``UsageError``."""
+    result = Discovery()
+    launch: set[str] = set()
+    params: set[str] = set()
+    manifests: set[str] = set()
+    explicit: set[str] = set()
+    gi = GitIgnore() if respect_gitignore else None
+    seen_real: set[str] = set()
+
+    def classify(path: str, name: str, forced: bool) -> None:
+        if is_launch_file(name):
+            launch.add(path)
+        elif name.endswith(YAML_SUFFIXES):
+            if forced or sniff_param_file(path):
+                params.add(path)
+        elif name == "package.xml":
+            manifests.add(path)
+
+    def walk(dirpath: str) -> None:
+        try:
+            real = os.path.realpath(dirpath)
+        except OSError:
+            return
+        if real in seen_real:
+            return
+        seen_real.add(real)
+        try:
+            entries = list(os.scandir(dirpath))
+        except OSError:
+            return
+        names = {e.name for e in entries}
+        if has_ignore_marker(dirpath, names):
+            return
+        subdirs: list[str] = []
+        for entry in sorted(entries, key=lambda e: e.name):
+            path = dirpath.rstrip("/") + "/" + entry.name
+            try:
+                is_dir = entry.is_dir()  # follows symlinks
+            except OSError:
+                continue
+            if is_dir:
+                if skip_dir_name(entry.name):
+                    continue
+                if gi is not None and gi.ignored(path, True):
+                    continue
+                subdirs.append(path)
+                continue
+            try:
+                if not entry.is_file():
+                    continue
+            except OSError:
+                continue
+            if gi is not None and gi.ignored(path, False):
+                continue
+            classify(path, entry.name, False)
+        for sub in subdirs:
+            walk(sub)
+
+    for raw in paths:
+        path = _norm(raw)
+        try:
+            st = os.stat(path)
+        except OSError:
+            raise UsageError(f"path does not exist: {raw}") from None
+        if stat.S_ISDIR(st.st_mode):
+            walk(path)
+        else:
+            explicit.add(path)
+            name = os.path.basename(path)
+            if is_launch_file(name) or name.endswith(YAML_SUFFIXES) or name == "package.xml":
+                classify(path, name, True)
+    result.launch_files = sorted(launch)
+    result.param_files = sorted(params)
+    result.package_xmls = sorted(manifests)
+    result.explicit = sorted(explicit)
+    return result
+
+
+def _src_has_packages(src: str, depth: int = 4) -> bool:
+    try:
+        entries = list(os.scandir(src))
+    except OSError:
+        return False
+    names = {e.name for e in entries}
+    if "package.xml" in names and depth < 4:
+        return True
+    if has_ignore_marker(src, names):
+        return False
+    if depth == 0:
+        return False
+    for e in sorted(entries, key=lambda e: e.name):
+        try:
+            if e.is_dir() and not skip_dir_name(e.name) and _src_has_packages(e.path, depth - 1):
+                return True
+        except OSError:
+            continue
+    return False
+
+
+def find_workspace_root(paths: list[str]) -> str:
+    """The nearest ancestor (or the path itself) holding a ``src/`` folder with packages; tried from
+    the common ancestor of ``paths`` first, then from each path; else the current directory."""
+    normed = [_norm(p) for p in paths] or [_norm(os.getcwd())]
+    starts: list[str] = []
+    try:
+        starts.append(os.path.commonpath(normed).replace(os.sep, "/"))
+    except ValueError:
+        pass
+    starts.extend(normed)
+    for start in starts:
+        d = start if os.path.isdir(start) else os.path.dirname(start)
+        while True:
+            src = os.path.join(d, "src")
+            if os.path.isdir(src) and _src_has_packages(src):
+                return d
+            parent = os.path.dirname(d)
+            if parent == d:
+                break
+            d = parent
+    return _norm(os.getcwd())

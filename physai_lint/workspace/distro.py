@@ -1,0 +1,30 @@
+"""Released ROS 2 packages per distro, from the rosdistro snapshot shipped in ``physai_lint/data``
+(see its ``_source`` entry for the commit). Loaded lazily, once per process."""
+from __future__ import annotations
+
+import json
+import os
+from functools import lru_cache
+
+DISTROS = ("humble", "jazzy", "kilted", "lyrical", "rolling")
+_DATA = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "data",
+                     "rosdistro-packages.json")
+
+
+@lru_cache(maxsize=1)
+def _load() -> dict[str, frozenset[str]]:
+    with open(_DATA, encoding="utf-8") as fh:
+        raw = json.load(fh)
+    return {k: frozenset(v) for k, v in raw.items() if k in DISTROS}
+
+
+def released_packages(distro: str) -> frozenset[str]:
+    """Package names released in ``distro`` (one of ``DISTROS``; ValueError otherwise)."""
+    if distro not in DISTROS:
+        raise ValueError(f"unknown ROS 2 distro {distro!r} (expected one of {', '.join(DISTROS)})")
+    return _load()[distro]
+
+
+def source_commit() -> str:
+    with open(_DATA, encoding="utf-8") as fh:
+        return str(json.load(fh)["_source"]["commit"])

@@ -1,0 +1,509 @@
+"""``PackageIndex``: every package the launch files may name -- workspace packages (read
+statically from package.xml, setup.py/setup.cfg, CMakeLists.txt), packages in ``AMENT_PREFIX_PATH``
+prefixes, and packages released in the chosen distro -- plus the *virtual install space*: where
+``FindPackageShare`` would point after ``colcon build`` and which source file lands there."""
+from __future__ import annotations
+
+import difflib
+import os
+import posixpath
+from dataclasses import dataclass, field
+from typing import Literal
+
+from ._glob import compile_glob
+from ._model import BuildInfo, InstallRule
+from .cmake import read_cmake_package
+from .discovery import UsageError, has_ignore_marker, skip_dir_name
+from .distro import DISTROS, released_packages
+from .package_xml import parse_manifest
+from .setup_py import read_setup_py
+
+Origin = Literal["workspace", "installed", "distro"]
+Status = Literal["ok", "missing", "not_installed", "unknown"]
+
+READ_LIMIT = 50 * 1024 * 1024
+SNAPSHOT_LIMIT = 50_000  # files per package
+RESOURCE_INDEX = "share/ament_index/resource_index"
+
+
+@dataclass(frozen=True)
+class Located:
+    status: Status
+    source: str | None = None
+    package: str | None = None
+    install_hint: str | None = None
+
+
+@dataclass
+class WorkspacePackage:
+    name: str
+    path: str  # the package directory (absolute, "/")
+    package_xml: str
+    build_type: str
+    format: int
+    exec_depends: dict[str, int]
+    executables: frozenset[str]
+    executables_in_bin: frozenset[str]
+    plugins: frozenset[str]
+    install_rules: tuple[InstallRule, ...]
+    parameter_yamls: dict[str, tuple[str, ...]]
+    parameter_modules: tuple[tuple[str, str], ...]
+    files: frozenset[str]  # relative "/" paths of the files in the package (snapshot at build)
+    install_complete: bool = True
+    executables_complete: bool = True
+    registers_in_index: bool = True
+    valid: bool = True  # False when catkin_pkg rejected package.xml
+    dirs: frozenset[str] = field(default_factory=frozenset)
+
+
+def _norm(path: str) -> str:
+    return posixpath.normpath(os.path.abspath(path).replace(os.sep, "/"))
+
+
+class PackageIndex:
+    def __init__(self, workspace_root: str, distro: str, prefixes: list[str]) -> None:
+        self.workspace_root = _norm(workspace_root)
+        self.install_root = self.workspace_root + "/install"
+        self.distro = distro
+        self.prefixes = prefixes
+        self.packages: dict[str, WorkspacePackage] = {}
+        self.installed: dict[str, str] = {}  # name -> prefix
+        self.problems: list[tuple[str, str, int]] = []
+        self._text_cache: dict[str, str | None] = {}
+        self._exists_cache: dict[str, bool] = {}
+        self._installed_exes: dict[str, frozenset[str] | None] = {}
+        self._installed_plugins: dict[str, frozenset[str] | None] = {}
+        self._by_dir: list[tuple[str, WorkspacePackage]] = []
+
+    # ---- identity -------------------------------------------------------------------------------
+
+    def _distro_set(self) -> frozenset[str]:
+        return released_packages(self.distro)
+
+    def has_package(self, name: str) -> bool:
+        return self.origin(name) is not None
+
+    def origin(self, name: str) -> Origin | None:
+        if name in self.packages:
+            return "workspace"
+        if name in self.installed:
+            return "installed"
+        if name in self._distro_set():
+            return "distro"
+        return None
+
+    def workspace_package(self, name: str) -> WorkspacePackage | None:
+        return self.packages.get(name)
+
+    def package_names(self) -> list[str]:
+        return sorted(set(self.packages) | set(self.installed) | self._distro_set())
+
+    def suggest(self, name: str, n: int = 3) -> list[str]:
+        """Close matches for a misspelt package name, workspace packages first."""
+        out: list[str] = []
+        for pool in (sorted(self.packages), sorted(set(self.installed) | self._distro_set())):
+            for m in difflib.get_close_matches(name, pool, n=n, cutoff=0.75):
+                if m not in out and m != name:
+                    out.append(m)
+        return out[:n]
+
+    def exec_depends(self, package: str) -> dict[str, int]:
+        pkg = self.packages.get(package)
+        return dict(pkg.exec_depends) if pkg else {}
+
+    # ---- executables and plugins ---------------------------------------------------------------
+
+    def executables(self, name: str) -> frozenset[str] | None:
+        pkg = self.packages.get(name)
+        if pkg is not None:
+            return pkg.executables if pkg.executables_complete else None
+        if name in self.installed:
+            if name not in self._installed_exes:
+                self._installed_exes[name] = _list_executables(f"{self.installed[name]}/lib/{name}")
+            return self._installed_exes[name]
+        return None
+
+    def plugins(self, name: str) -> frozenset[str] | None:
+        pkg = self.packages.get(name)
+        if pkg is not None:
+            if pkg.build_type == "ament_python":
+                return frozenset()
+            return pkg.plugins if pkg.install_complete else None
+        if name in self.installed:
+            if name not in self._installed_plugins:
+                path = f"{self.installed[name]}/{RESOURCE_INDEX}/rclcpp_components/{name}"
+                text = self.read_text(path)
+                if text is None:
+                    self._installed_plugins[name] = None if os.path.exists(path) else frozenset()
+                else:
+                    self._installed_plugins[name] = frozenset(
+                        ln.split(";", 1)[0].strip() for ln in text.splitlines() if ln.strip())
+            return self._installed_plugins[name]
+        return None
+
+    def parameter_yaml_for(self, package: str, executable: str) -> list[str]:
+        pkg = self.packages.get(package)
+        if pkg is None:
+            return []
+        return list(pkg.parameter_yamls.get(executable, ()))
+
+    # ---- install space -------------------------------------------------------------------------
+
+    def prefix_dir(self, name: str) -> str | None:
+        origin = self.origin(name)
+        if origin == "workspace":
+            return f"{self.install_root}/{name}"
+        if origin == "installed":
+            return self.installed[name]
+        if origin == "distro":
+            return f"/opt/ros/{self.distro}"
+        return None
+
+    def share_dir(self, name: str) -> str | None:
+        prefix = self.prefix_dir(name)
+        return None if prefix is None else f"{prefix}/share/{name}"
+
+    def package_of_source(self, path: str) -> WorkspacePackage | None:
+        """The workspace package whose source directory holds ``path``."""
+        path = _norm(path)
+        for d, pkg in self._by_dir:
+            if path == d or path.startswith(d + "/"):
+                return pkg
+        return None
+
+    def locate(self, path: str) -> Located:
+        """Where a path launch would open comes from (see module docstring)."""
+        path = _norm(path)
+        # 1. the virtual install space of a workspace package
+        if path.startswith(self.install_root + "/"):
+            rest = path[len(self.install_root) + 1 :]
+            name, _, rel = rest.partition("/")
+            pkg = self.packages.get(name)
+            if pkg is not None:
+                return self._locate_installed(pkg, rel)
+            return Located("ok" if self._exists(path) else "unknown", None, name or None)
+        # 2. the workspace source tree
+        pkg = self.package_of_source(path)
+        if pkg is not None:
+            rel = path[len(pkg.path) + 1 :] if path != pkg.path else ""
+            ok = rel == "" or rel in pkg.files or rel in pkg.dirs
+            return Located("ok" if ok else "missing", path, pkg.name)
+        # 3. AMENT_PREFIX_PATH prefixes (real files)
+        for prefix in self.prefixes:
+            if path == prefix or path.startswith(prefix + "/"):
+                rel = path[len(prefix) + 1 :]
+                parts = rel.split("/")
+                owner = parts[1] if len(parts) > 1 and parts[0] in ("share", "lib") else None
+                return Located("ok" if self._exists(path) else "missing", path, owner)
+        # 4. the distro's prefix, for packages we only know by name
+        opt = f"/opt/ros/{self.distro}/"
+        if path.startswith(opt):
+            parts = path[len(opt) :].split("/")
+            owner = parts[1] if len(parts) > 1 and parts[0] in ("share", "lib") else None
+            return Located("unknown", None, owner)
+        # 5. anywhere else
+        if path == self.workspace_root or path.startswith(self.workspace_root + "/"):
+            return Located("ok" if self._exists(path) else "missing", path, None)
+        return Located("ok", path, None) if self._exists(path) else Located("unknown", None, None)
+
+    def _locate_installed(self, pkg: WorkspacePackage, rel: str) -> Located:
+        name = pkg.name
+        share = f"share/{name}"
+        if rel in ("", share, "share", "lib", f"lib/{name}"):
+            return Located("ok", pkg.path, name)
+        unknown_hit = False
+        missing_source: str | None = None
+        for rule in pkg.install_rules:
+            dest = rule.dest
+            if rule.source is None:
+                if dest == "" or rel == dest or rel.startswith(dest + "/"):
+                    unknown_hit = True
+                continue
+            if rule.kind == "file":
+                target = posixpath.join(dest, rule.rename or posixpath.basename(rule.source))
+                if rel == target:
+                    if self._source_exists(pkg, rule.source):
+                        return Located("ok", rule.source, name)
+                    missing_source = missing_source or rule.source
+                elif rel == dest or target.startswith(rel + "/"):
+                    return Located("ok", None, name)  # an install directory itself
+                continue
+            base = dest if rule.contents_only else posixpath.join(dest, posixpath.basename(rule.source))
+            if rel == base or (base and base.startswith(rel + "/")):
+                return Located("ok", rule.source, name)
+            if base and not rel.startswith(base + "/"):
+                continue
+            sub = rel[len(base) + 1 :] if base else rel
+            if not _rule_admits(rule, sub):
+                continue
+            cand = rule.source + "/" + sub
+            if self._source_exists(pkg, cand) or self._source_is_dir(pkg, cand):
+                return Located("ok", cand, name)
+        if f"lib/{name}/" in rel + "/" and posixpath.basename(rel) in pkg.executables:
+            return Located("ok", None, name)
+        if missing_source is not None:
+            return Located("missing", missing_source, name)
+        tail = rel[len(share) + 1 :] if rel.startswith(share + "/") else None
+        counterpart = f"{pkg.path}/{tail}" if tail else None
+        if unknown_hit or not pkg.install_complete:
+            return Located("unknown", counterpart if tail and tail in pkg.files else None, name)
+        if tail is not None and (tail in pkg.files or tail in pkg.dirs):
+            return Located("not_installed", counterpart, name, _install_hint(pkg, tail))
+        return Located("missing", counterpart, name)
+
+    def _source_exists(self, pkg: WorkspacePackage, path: str) -> bool:
+        if path.startswith(pkg.path + "/"):
+            return path[len(pkg.path) + 1 :] in pkg.files
+        return self._exists(path)
+
+    def _source_is_dir(self, pkg: WorkspacePackage, path: str) -> bool:
+        if path.startswith(pkg.path + "/"):
+            return path[len(pkg.path) + 1 :] in pkg.dirs
+        return os.path.isdir(path)
+
+    def _exists(self, path: str) -> bool:
+        if path not in self._exists_cache:
+            self._exists_cache[path] = os.path.exists(path)
+        return self._exists_cache[path]
+
+    def exists(self, path: str) -> bool:
+        """Does a file or directory exist on disk (cached)?"""
+        return self._exists(_norm(path))
+
+    # ---- reading ---------------------------------------------------------------------------------
+
+    def read_text(self, path: str) -> str | None:
+        """A file's text: None when unreadable, larger than 50 MB, binary (NUL bytes) or not UTF-8.
+        Cached: every layer reads workspace files through here."""
+        path = _norm(path)
+        if path in self._text_cache:
+            return self._text_cache[path]
+        text = read_text_file(path)
+        self._text_cache[path] = text
+        return text
+
+
+def read_text_file(path: str) -> str | None:
+    try:
+        if os.path.getsize(path) > READ_LIMIT:
+            return None
+        with open(path, "rb") as fh:
+            data = fh.read(READ_LIMIT + 1)
+    except OSError:
+        return None
+    if len(data) > READ_LIMIT or b"\x00" in data:
+        return None
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError:
+        return None
+    return text[1:] if text.startswith("\ufeff") else text
+
+
+def _rule_admits(rule: InstallRule, sub: str) -> bool:
+    parts = sub.split("/")
+    for ex in rule.excludes:
+        rx = compile_glob(ex, False)
+        if any(rx.match(p) for p in parts):
+            return False
+    if rule.files_matching and rule.patterns:
+        return any(compile_glob(p, False).match(parts[-1]) for p in rule.patterns)
+    return True
+
+
+def _install_hint(pkg: WorkspacePackage, tail: str) -> str:
+    d = posixpath.dirname(tail)
+    base = posixpath.basename(tail)
+    top = tail.split("/", 1)[0]
+    if pkg.build_type == "ament_python":
+        ext = posixpath.splitext(base)[1]
+        if d:
+            parts = ", ".join(repr(p) for p in d.split("/"))
+            return (f"add (os.path.join('share', package_name, {parts}), "
+                    f"glob('{d}/*{ext}')) to data_files in setup.py")
+        return f"add (os.path.join('share', package_name), ['{base}']) to data_files in setup.py"
+    if d:
+        return f'add "{top}" to install(DIRECTORY ... DESTINATION share/${{PROJECT_NAME}}) in CMakeLists.txt'
+    return f'add install(FILES {base} DESTINATION share/${{PROJECT_NAME}}) to CMakeLists.txt'
+
+
+def _list_executables(libdir: str) -> frozenset[str] | None:
+    try:
+        entries = list(os.scandir(libdir))
+    except OSError:
+        return frozenset() if not os.path.exists(libdir) else None
+    out = set()
+    for e in entries:
+        try:
+            if e.is_file() and os.access(e.path, os.X_OK):
+                out.add(e.name)
+        except OSError:
+            continue
+    return frozenset(out)
+
+
+# ---- building ---------------------------------------------------------------------------------
+
+
+def _find_packages(root: str) -> list[str]:
+    """Directories below ``root`` holding a package.xml, the way colcon crawls: ignore markers skip
+    a directory and everything below; a package's subdirectories hold no further packages."""
+    found: list[str] = []
+    seen: set[str] = set()
+
+    def walk(d: str) -> None:
+        try:
+            real = os.path.realpath(d)
+        except OSError:
+            return
+        if real in seen:
+            return
+        seen.add(real)
+        try:
+            entries = list(os.scandir(d))
+        except OSError:
+            return
+        names = {e.name for e in entries}
+        if has_ignore_marker(d, names):
+            return
+        if "package.xml" in names:
+            found.append(d)
+            return
+        for e in sorted(entries, key=lambda e: e.name):
+            if skip_dir_name(e.name):
+                continue
+            try:
+                if e.is_dir():
+                    walk(d + "/" + e.name)
+            except OSError:
+                continue
+
+    walk(root)
+    return found
+
+
+def _snapshot(pkg_dir: str) -> tuple[frozenset[str], frozenset[str]]:
+    files: set[str] = set()
+    dirs: set[str] = set()
+    seen: set[str] = set()
+    stack = [("", pkg_dir)]
+    while stack and len(files) < SNAPSHOT_LIMIT:
+        rel, d = stack.pop()
+        try:
+            real = os.path.realpath(d)
+        except OSError:
+            continue
+        if real in seen:
+            continue
+        seen.add(real)
+        try:
+            entries = list(os.scandir(d))
+        except OSError:
+            continue
+        for e in entries:
+            r = rel + e.name if not rel else rel + "/" + e.name
+            try:
+                if e.is_dir():
+                    if e.name in (".git", "__pycache__", ".svn", ".hg"):
+                        continue
+                    dirs.add(r)
+                    stack.append((r, d + "/" + e.name))
+                elif e.is_file():
+                    files.add(r)
+            except OSError:
+                continue
+    return frozenset(files), frozenset(dirs)
+
+
+def build_package_index(workspace_root: str, distro: str = "humble",
+                        ament_prefix_path: str | None = None) -> PackageIndex:
+    if distro not in DISTROS:
+        raise UsageError(f"unknown distro {distro!r}: expected one of {', '.join(DISTROS)}")
+    root = _norm(workspace_root)
+    prefixes: list[str] = []
+    for p in (ament_prefix_path or "").split(os.pathsep):
+        if p.strip():
+            np = _norm(p.strip())
+            if np not in prefixes:
+                prefixes.append(np)
+    index = PackageIndex(root, distro, prefixes)
+
+    for prefix in prefixes:
+        try:
+            names = os.listdir(f"{prefix}/{RESOURCE_INDEX}/packages")
+        except OSError:
+            continue
+        for n in sorted(names):
+            if not n.startswith("."):
+                index.installed.setdefault(n, prefix)
+
+    for pkg_dir in _find_packages(root) if os.path.isdir(root) else []:
+        pkg = _read_package(index, pkg_dir)
+        if pkg is None:
+            continue
+        if pkg.name in index.packages:
+            other = index.packages[pkg.name]
+            index.problems.append((pkg.package_xml, f'duplicate package name "{pkg.name}" (also in '
+                                   f'{other.path}); colcon refuses to build this workspace', 1))
+            continue
+        index.packages[pkg.name] = pkg
+    index._by_dir = sorted(((p.path, p) for p in index.packages.values()),
+                           key=lambda t: -len(t[0]))
+    return index
+
+
+def _read_package(index: PackageIndex, pkg_dir: str) -> WorkspacePackage | None:
+    xml_path = pkg_dir + "/package.xml"
+    text = index.read_text(xml_path)
+    if text is None:
+        index.problems.append((xml_path, "package.xml is unreadable (binary, too large or not UTF-8)", 1))
+        return None
+    man = parse_manifest(text, xml_path, index.distro)
+    if man.error is not None:
+        index.problems.append((xml_path, man.error[0], man.error[1]))
+    name = man.name or posixpath.basename(pkg_dir)
+    files, dirs = _snapshot(pkg_dir)
+    build_type = man.build_type
+    if build_type is None:
+        build_type = ("ament_python" if "setup.py" in files and "CMakeLists.txt" not in files
+                      else "ament_cmake" if "CMakeLists.txt" in files else "unknown")
+    if build_type == "ament_python":
+        info = read_setup_py(pkg_dir, name, files, index.read_text(pkg_dir + "/setup.py")
+                             if "setup.py" in files else None)
+    elif build_type in ("ament_cmake", "cmake"):
+        info = read_cmake_package(pkg_dir, name, index.read_text(pkg_dir + "/CMakeLists.txt")
+                                  if "CMakeLists.txt" in files else None)
+    else:
+        info = BuildInfo(complete=False, executables_complete=False)
+    index.problems.extend(info.problems)
+    # install(DIRECTORY ... DESTINATION lib/<pkg> USE_SOURCE_PERMISSIONS): executable files in it
+    lib_dest = f"lib/{name}"
+    for rule in info.rules:
+        if rule.kind == "directory" and rule.dest == lib_dest and rule.source and rule.contents_only:
+            rel = rule.source[len(pkg_dir) + 1 :] if rule.source.startswith(pkg_dir + "/") else None
+            if rel is None:
+                continue
+            for f in files:
+                if f.startswith(rel + "/") and "/" not in f[len(rel) + 1 :]:
+                    if os.access(pkg_dir + "/" + f, os.X_OK):
+                        info.executables.add(f[len(rel) + 1 :])
+    return WorkspacePackage(
+        name=name,
+        path=pkg_dir,
+        package_xml=xml_path,
+        build_type=build_type,
+        format=man.format,
+        exec_depends=man.exec_depends,
+        executables=frozenset(info.executables),
+        executables_in_bin=frozenset(info.executables_in_bin),
+        plugins=frozenset(info.plugins),
+        install_rules=tuple(info.rules),
+        parameter_yamls={k: tuple(v) for k, v in sorted(info.parameter_yamls.items())},
+        parameter_modules=tuple(info.parameter_modules),
+        files=files,
+        dirs=dirs,
+        install_complete=info.complete,
+        executables_complete=info.executables_complete,
+        registers_in_index=info.registers_in_index,
+        valid=man.error is None,
+    )

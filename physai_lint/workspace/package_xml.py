@@ -1,0 +1,82 @@
+"""package.xml through catkin_pkg: it implements REP 127/140/149 (formats 1-3, ``condition``
+evaluation, group deps, build_type export validation), which a hand-written parser would only
+approximate; we add what it lacks: the line of every dependency, for messages."""
+from __future__ import annotations
+
+import re
+import warnings
+from dataclasses import dataclass, field
+
+_DEP_RX = re.compile(r"<(depend|exec_depend|run_depend)\b[^>]*>\s*([^<\s]+)\s*</\1\s*>", re.S)
+_NAME_RX = re.compile(r"<name>\s*([^<\s]+)\s*</name>")
+_BUILD_TYPE_RX = re.compile(r"<build_type\b[^>]*>\s*([^<\s]+)\s*</build_type>")
+_LINE_RX = re.compile(r"line (\d+)")
+
+
+@dataclass
+class ManifestInfo:
+    name: str | None
+    build_type: str | None
+    format: int
+    exec_depends: dict[str, int] = field(default_factory=dict)
+    error: tuple[str, int] | None = None  # (message, line) when catkin_pkg rejected it
+
+
+def _line_of(text: str, pos: int) -> int:
+    return text.count("\n", 0, pos) + 1
+
+
+def dependency_lines(text: str) -> dict[str, int]:
+    lines: dict[str, int] = {}
+    for m in _DEP_RX.finditer(text):
+        lines.setdefault(m.group(2), _line_of(text, m.start(2)))
+    return lines
+
+
+def parse_manifest(text: str, filename: str, distro: str) -> ManifestInfo:
+    # catkin_pkg.condition builds its pyparsing grammar with deprecated names: keep output clean
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        return _parse_manifest(text, filename, distro)
+
+
+def _parse_manifest(text: str, filename: str, distro: str) -> ManifestInfo:
+    from catkin_pkg.package import parse_package_string  # deferred: the import costs ~50 ms
+
+    lines = dependency_lines(text)
+    try:
+        pkg_warnings: list[str] = []
+        pkg = parse_package_string(text, filename=filename, warnings=pkg_warnings)
+    except Exception as exc:  # InvalidPackage, AssertionError on unknown format, ValueError ...
+        msg = " ".join(str(exc).split()) or type(exc).__name__
+        line = 1
+        m = _LINE_RX.search(str(exc))
+        if m:
+            line = int(m.group(1))
+        nm = _NAME_RX.search(text)
+        bt = _BUILD_TYPE_RX.search(text)
+        return ManifestInfo(
+            name=nm.group(1) if nm else None,
+            build_type=bt.group(1) if bt else None,
+            format=0,
+            exec_depends=lines,
+            error=(msg, line),
+        )
+    try:
+        pkg.evaluate_conditions({"ROS_VERSION": "2", "ROS_DISTRO": distro, "ROS_PYTHON_VERSION": "3"})
+    except Exception:
+        pass
+    deps: dict[str, int] = {}
+    for dep in list(pkg.exec_depends) + list(getattr(pkg, "run_depends", [])):
+        cond = getattr(dep, "evaluated_condition", None)
+        if cond is False:
+            continue
+        deps.setdefault(dep.name, lines.get(dep.name, 1))
+    try:
+        build_type = pkg.get_build_type()
+    except Exception:
+        bt = _BUILD_TYPE_RX.search(text)
+        build_type = bt.group(1) if bt else "catkin"
+    return ManifestInfo(
+        name=pkg.name, build_type=build_type, format=int(pkg.package_format), exec_depends=deps
+    )

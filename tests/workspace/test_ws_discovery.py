@@ -1,0 +1,105 @@
+import os
+
+import pytest
+
+from physai_lint.workspace import UsageError, discover, find_workspace_root, is_launch_file
+
+
+def rel(root, paths):
+    return [os.path.relpath(p, root).replace(os.sep, "/") for p in paths]
+
+
+def test_is_launch_file():
+    assert is_launch_file("a.launch.py") and is_launch_file("a_launch.py")
+    assert is_launch_file("x.launch.xml") and is_launch_file("launch.yaml")
+    assert not is_launch_file("launch.py.bak") and not is_launch_file("a.py")
+
+
+def test_discover_finds_launch_params_manifests(ws):
+    d = discover([str(ws)])
+    assert rel(ws, d.launch_files) == [
+        "src/cpp_pkg/launch/bringup.launch.xml",
+        "src/cpp_pkg/launch/bringup.launch.yaml",
+        "src/old_pkg/launch/sim.launch.py",
+        "src/py_pkg/launch/demo.launch.py",
+        "src/py_pkg/launch/other_launch.py",
+        "src/py_pkg/launch/x.launch.xml",
+    ]
+    # only YAML mentioning ros__parameters; b.json is not YAML
+    assert rel(ws, d.param_files) == ["src/cpp_pkg/config/driver.yaml", "src/py_pkg/config/a.yaml"]
+    assert "src/cpp_pkg/package.xml" in rel(ws, d.package_xmls)
+    assert all(p.startswith("/") and "\\" not in p for p in d.launch_files)
+    assert d.explicit == []
+
+
+def test_ignore_markers_and_skipped_dirs(ws):
+    for sub in ("build/x", "install/x", "log/x", ".git/x"):
+        (ws / sub).mkdir(parents=True)
+        (ws / sub / "c.launch.py").write_text("# l")
+    d = discover([str(ws)])
+    names = rel(ws, d.launch_files)
+    assert not any(n.startswith(("build/", "install/", "log/", ".git/", ".hidden/")) for n in names)
+    assert not any("ignored" in n or "amentignored" in n for n in names)
+    # CATKIN_IGNORE too, and the marker hides everything below
+    (ws / "src/py_pkg/CATKIN_IGNORE").write_text("")
+    assert not any("py_pkg" in n for n in rel(ws, discover([str(ws)]).launch_files))
+
+
+def test_explicit_files_and_missing_path(ws):
+    f = ws / "src/py_pkg/extra/unused.yaml"
+    d = discover([str(f), str(ws / "src/py_pkg/launch/demo.launch.py")])
+    assert rel(ws, d.param_files) == ["src/py_pkg/extra/unused.yaml"]
+    assert rel(ws, d.launch_files) == ["src/py_pkg/launch/demo.launch.py"]
+    assert len(d.explicit) == 2
+    with pytest.raises(UsageError) as exc:
+        discover([str(ws / "nope")])
+    assert "nope" in exc.value.message and "\n" not in exc.value.message
+
+
+def test_gitignore(ws):
+    (ws / ".git").mkdir()
+    (ws / ".gitignore").write_text("# comment\n*.launch.xml\n!x.launch.xml\n/src/old_pkg/\nextra/\n")
+    (ws / "src/cpp_pkg/.gitignore").write_text("config/\n")
+    (ws / ".git/info").mkdir()
+    (ws / ".git/info/exclude").write_text("other_launch.py\n")
+    d = discover([str(ws)])
+    names = rel(ws, d.launch_files)
+    assert "src/cpp_pkg/launch/bringup.launch.xml" not in names
+    assert "src/py_pkg/launch/x.launch.xml" in names  # negated
+    assert "src/py_pkg/launch/other_launch.py" not in names  # info/exclude
+    assert not any(n.startswith("src/old_pkg") for n in names)  # anchored dir
+    assert "src/cpp_pkg/config/driver.yaml" not in rel(ws, d.param_files)  # nested .gitignore
+    # switched off
+    assert "src/cpp_pkg/launch/bringup.launch.xml" in rel(ws, discover([str(ws)], respect_gitignore=False).launch_files)
+
+
+def test_gitignore_outside_checkout_is_ignored(ws):
+    (ws / ".gitignore").write_text("*.launch.py\n")  # no .git: not a checkout
+    assert "src/py_pkg/launch/demo.launch.py" in rel(ws, discover([str(ws)]).launch_files)
+
+
+def test_symlink_loop(ws):
+    os.symlink(str(ws / "src"), str(ws / "src/py_pkg/loop"))
+    os.symlink(str(ws / "src/cpp_pkg"), str(ws / "src/cpp_pkg/launch/self"))
+    d = discover([str(ws)])
+    # each real directory is visited once: no duplicates through the links
+    reals = [os.path.realpath(p) for p in d.launch_files]
+    assert len(reals) == len(set(reals))
+    assert len(d.launch_files) == 6
+
+
+def test_deterministic(ws):
+    assert discover([str(ws / "src"), str(ws)]) == discover([str(ws)])
+
+
+def test_find_workspace_root(ws, tmp_path, monkeypatch):
+    f = ws / "src/py_pkg/launch/demo.launch.py"
+    assert find_workspace_root([str(f)]) == str(ws)
+    assert find_workspace_root([str(ws)]) == str(ws)
+    # cpp_pkg has a src/ folder of C++ sources: not a workspace
+    assert find_workspace_root([str(ws / "src/cpp_pkg/src/driver.cpp")]) == str(ws)
+    lone = tmp_path / "lone"
+    lone.mkdir()
+    (lone / "a.launch.py").write_text("")
+    monkeypatch.chdir(lone)
+    assert find_workspace_root([str(lone / "a.launch.py")]) == str(lone)

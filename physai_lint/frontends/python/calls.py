@@ -1,0 +1,344 @@
+"""Calls, attributes, subscripts and imports for the evaluator.
+
+Only pure operations on known data run for real (str/list/dict methods on concrete values);
+everything touching the machine (environment, files outside ``read_file``, processes) is Opaque.
+"""
+from __future__ import annotations
+
+import ast
+import json
+import os
+import posixpath
+from typing import TYPE_CHECKING, Any
+
+import yaml
+
+from physai_lint.model.span import Span
+from physai_lint.model.values import FindPackage, LaunchConfig, Text
+
+from . import api, builtin_calls, symbolic
+from .convert_values import to_value
+from .runtime import (BoundMethod, ContextSym, FileHandle, KPath, LaunchConfigsSym, LObj, ModuleValue,
+                      Opaque, Ref, SymStr, UserFunc)
+
+if TYPE_CHECKING:
+    from .evaluator import Evaluator, Scope
+
+_STR_METHODS = frozenset(
+    "capitalize casefold center count endswith expandtabs find index isalnum isalpha isascii isdecimal "
+    "isdigit isidentifier islower isnumeric isspace istitle isupper ljust lower lstrip partition "
+    "removeprefix removesuffix replace rfind rindex rjust rpartition rsplit rstrip split splitlines "
+    "startswith strip swapcase title upper zfill".split())
+_LIST_METHODS = frozenset("append extend insert pop index count copy remove reverse clear".split())
+_DICT_METHODS = frozenset("items keys values get update copy pop setdefault".split())
+_KNOWN_MODULES = frozenset("os os.path sys json yaml pathlib math re typing functools itertools "
+                           "ament_index_python tempfile xacro subprocess shutil glob collections "
+                           "launch_ros launch launch_xml launch_yaml ament_index_python.packages".split())
+
+
+def iterate(ev: "Evaluator", v: Any) -> list[Any] | None:
+    """The items of a known iterable, else None."""
+    if isinstance(v, dict):
+        return list(v.keys())
+    if isinstance(v, (list, tuple, str, set, frozenset, range)):
+        if isinstance(v, (set, frozenset)):
+            try:
+                return sorted(v)
+            except TypeError:
+                return list(v)
+        return list(v)
+    return None
+
+
+def get_attr(ev: "Evaluator", obj: Any, attr: str, span: Span) -> Any:
+    if isinstance(obj, Opaque):
+        return Opaque(obj.reason, span)
+    if isinstance(obj, Ref):
+        return Ref(f"{obj.qual}.{attr}")
+    if isinstance(obj, ModuleValue):
+        return obj.globals.get(attr, Opaque(f'"{attr}" not found in module "{obj.name}"', span))
+    if isinstance(obj, ContextSym) and attr == "launch_configurations":
+        return LaunchConfigsSym()
+    if isinstance(obj, KPath):
+        if attr == "parent":
+            return KPath(posixpath.dirname(obj.path)) if isinstance(obj.path, str) else Opaque("path", span)
+        if attr in ("name", "stem", "suffix") and isinstance(obj.path, str):
+            name = posixpath.basename(obj.path)
+            return {"name": name, "stem": posixpath.splitext(name)[0], "suffix": posixpath.splitext(name)[1]}[attr]
+    if isinstance(obj, (LObj, ContextSym, LaunchConfigsSym, SymStr, KPath, FileHandle, str, list, dict, tuple)):
+        return BoundMethod(obj, attr)
+    return Opaque(f'attribute "{attr}" cannot be evaluated statically', span)
+
+
+def subscript(ev: "Evaluator", obj: Any, key: Any, span: Span) -> Any:
+    if isinstance(obj, LaunchConfigsSym) and isinstance(key, str):
+        return SymStr((LaunchConfig((Text(str(key), span),), None, span),))
+    if isinstance(obj, (dict, list, tuple, str)) and not isinstance(key, Opaque):
+        try:
+            result = obj[key]
+        except Exception:
+            return Opaque("subscript fails statically", span)
+        if isinstance(obj, (list, tuple)) and isinstance(key, slice):
+            return result
+        return result
+    reason = obj.reason if isinstance(obj, Opaque) else (key.reason if isinstance(key, Opaque) else "subscript of an unknown value")
+    return Opaque(reason, span)
+
+
+def import_module(ev: "Evaluator", name: str, level: int, scope: "Scope") -> Any:
+    top = name.split(".")[0]
+    if level == 0 and (top in api.ROOTS or name in _KNOWN_MODULES or top in _KNOWN_MODULES):
+        return Ref(name)
+    loaded = _load_sibling(ev, name, level, scope)
+    return loaded if loaded is not None else Ref(name)
+
+
+def _load_sibling(ev: "Evaluator", name: str, level: int, scope: "Scope") -> ModuleValue | None:
+    if ev.read_file is None or not name:
+        return None
+    from .evaluator import ModuleCtx
+    from .positions import SpanMaker
+
+    base = posixpath.dirname((scope.module or ev.main).path)
+    for _ in range(max(level - 1, 0)):
+        base = posixpath.dirname(base)
+    rel = name.replace(".", "/")
+    for cand in (f"{base}/{rel}.py", f"{base}/{rel}/__init__.py"):
+        if cand in ev.modules:
+            cached = ev.modules[cand]
+            return cached if isinstance(cached, ModuleValue) else None
+        text = ev.read_file(cand)
+        if text is None:
+            continue
+        ev.modules[cand] = None  # cycle guard
+        try:
+            tree = ast.parse(text, cand)
+        except (SyntaxError, ValueError, RecursionError, MemoryError):
+            return None
+        ev.read_files.append(cand)
+        ctx = ModuleCtx(cand, SpanMaker(cand, text), posixpath.basename(cand) + ":")
+        try:
+            ev.exec_block(tree.body, ctx.scope)
+        except Exception:  # noqa: BLE001 - a helper module we cannot follow is just unknown
+            pass
+        mod = ModuleValue(name, ctx.scope.vars)
+        ev.modules[cand] = mod
+        return mod
+    return None
+
+
+def call(ev: "Evaluator", func: Any, args: list[Any], kwargs: dict[str, Any], node: ast.Call,
+         scope: "Scope", arg_spans: list[Span], kw_spans: dict[str, Span]) -> Any:
+    span = ev.span(node, scope)
+    if isinstance(func, UserFunc):
+        return call_user(ev, func, args, kwargs, span)
+    if isinstance(func, Ref):
+        qual = api.canonical(func.qual)
+        if qual is not None and qual not in api.FUNCTIONS:
+            return make_lobj(ev, qual, args, kwargs, node, scope, arg_spans, kw_spans)
+        return call_ref(ev, qual or func.qual, args, kwargs, span)
+    if isinstance(func, BoundMethod):
+        return call_method(ev, func.obj, func.name, args, kwargs, span)
+    if isinstance(func, Opaque):
+        return Opaque(func.reason, span)
+    return Opaque("call of a value that cannot be evaluated statically", span)
+
+
+def call_user(ev: "Evaluator", f: UserFunc, args: list[Any], kwargs: dict[str, Any], span: Span) -> Any:
+    from .evaluator import MAX_DEPTH, Abort, Scope
+
+    if ev.depth >= MAX_DEPTH:
+        return Opaque("call depth limit reached (recursive helper?)", span)
+    a = f.node.args
+    fscope = Scope(f.closure, f.module)
+    positional = [p.arg for p in a.posonlyargs + a.args]
+    defaults = dict(zip(positional[len(positional) - len(f.defaults):], f.defaults))
+    for i, name in enumerate(positional):
+        if i < len(args):
+            fscope.vars[name] = args[i]
+        elif name in kwargs:
+            fscope.vars[name] = kwargs.pop(name)
+        elif name in defaults:
+            fscope.vars[name] = defaults[name]
+        else:
+            fscope.vars[name] = Opaque(f'missing argument "{name}"', span)
+    if a.vararg is not None:
+        fscope.vars[a.vararg.arg] = tuple(args[len(positional):])
+    for kw in a.kwonlyargs:
+        fscope.vars[kw.arg] = kwargs.pop(kw.arg, f.kw_defaults.get(kw.arg, Opaque(f'missing argument "{kw.arg}"', span)))
+    if a.kwarg is not None:
+        fscope.vars[a.kwarg.arg] = {k: v for k, v in kwargs.items() if k not in positional}
+    ev.depth += 1
+    try:
+        if isinstance(f.node, ast.Lambda):
+            return ev.ev(f.node.body, fscope)
+        return ev.run_function(f.node.body, fscope)
+    except Abort as e:
+        return Opaque(e.reason, span)
+    except RecursionError:
+        return Opaque("too deeply nested to evaluate", span)
+    finally:
+        ev.depth -= 1
+
+
+def call_ref(ev: "Evaluator", qual: str, args: list[Any], kwargs: dict[str, Any], span: Span) -> Any:
+    if qual.startswith("builtins."):
+        return builtin_calls.call_builtin(ev, qual[9:], args, kwargs, span)
+    if qual in ("ament_index_python.packages.get_package_share_directory", "ament_index_python.packages.get_package_prefix"):
+        pkg = args[0] if args else kwargs.get("package_name")
+        kind = "share" if qual.endswith("share_directory") else "prefix"
+        return SymStr((FindPackage(to_value(pkg, span), kind, span, eager=True),))  # type: ignore[arg-type]
+    if qual == "launch.utilities.perform_substitutions" and len(args) >= 2:
+        return SymStr(to_value(args[1], span))
+    if qual == "os.path.join":
+        if any(symbolic.is_subst(a) for a in args):
+            ev.concat("os.path.join", span, "substitution passed to os.path.join at description time")
+        return symbolic.path_join(list(args), span) if args else Opaque("os.path.join()", span)
+    if qual in ("os.path.dirname", "os.path.basename", "os.path.abspath", "os.path.normpath", "os.path.realpath",
+                "os.path.expanduser", "os.path.splitext", "os.path.split"):
+        if len(args) == 1 and isinstance(args[0], str) and (qual[8:] not in ("abspath", "realpath") or args[0].startswith("/")):
+            return getattr(posixpath, qual[8:])(str(args[0]))
+        return Opaque(f"{qual} of a value that cannot be evaluated statically", span)
+    if qual in ("pathlib.Path", "pathlib.PurePath", "pathlib.PosixPath"):
+        if args and all(isinstance(a, (str, KPath)) for a in args):
+            return KPath(posixpath.join(*[a.path if isinstance(a, KPath) else str(a) for a in args]))
+        if len(args) == 1 and isinstance(args[0], SymStr):
+            return KPath(args[0])  # type: ignore[arg-type]
+        return Opaque("Path of a value that cannot be evaluated statically", span)
+    if qual in ("yaml.safe_load", "yaml.load", "yaml.full_load", "json.load", "json.loads"):
+        return load_data(ev, qual, args[0] if args else kwargs.get("stream"), span)
+    if qual.startswith("os.environ") or qual in ("os.getenv", "os.getcwd"):
+        return Opaque("depends on the environment", span)
+    return Opaque(f'call of "{qual}" cannot be evaluated statically', span)
+
+
+def read_text(ev: "Evaluator", path: Any, span: Span) -> Any:
+    if isinstance(path, KPath):
+        path = path.path
+    if not isinstance(path, str) or not path.startswith("/") or ev.read_file is None:
+        return Opaque("reads a file that cannot be located statically", span)
+    path = posixpath.normpath(str(path))
+    text = ev.read_file(path)
+    if text is None:
+        return Opaque(f'file "{path}" cannot be read', span)
+    if path not in ev.read_files:
+        ev.read_files.append(path)
+    return text
+
+
+def load_data(ev: "Evaluator", qual: str, src: Any, span: Span) -> Any:
+    if isinstance(src, FileHandle):
+        src = read_text(ev, src.path, span)
+    if isinstance(src, Opaque) or not isinstance(src, str):
+        return Opaque(src.reason if isinstance(src, Opaque) else "loads data from an unknown source", span)
+    try:
+        if qual.startswith("json"):
+            return json.loads(str(src))
+        return yaml.safe_load(str(src))
+    except Exception:  # noqa: BLE001 - a malformed file is unknown here; other tools report it
+        return Opaque("the file could not be parsed", span)
+
+
+def call_method(ev: "Evaluator", obj: Any, name: str, args: list[Any], kwargs: dict[str, Any], span: Span) -> Any:
+    if isinstance(obj, LObj):
+        if name in ("add_action", "add_entity") and "entities" in obj.extra and args:
+            obj.extra["entities"].append(args[0])
+            return None
+        if name == "perform" and symbolic.is_subst(obj):
+            return SymStr(to_value(obj, span))
+        return Opaque(f"method {name} of {api.short(obj.qual)}", span)
+    if isinstance(obj, ContextSym):
+        if name == "perform_substitution" and args:
+            return SymStr(to_value(args[0], span))
+        return Opaque(f"context.{name}", span)
+    if isinstance(obj, LaunchConfigsSym):
+        if name == "get" and args and isinstance(args[0], str):
+            default = to_value(args[1], span) if len(args) > 1 and args[1] is not None else None
+            return SymStr((LaunchConfig((Text(str(args[0]), span),), default, span),))
+        return Opaque(f"launch_configurations.{name}", span)
+    if isinstance(obj, FileHandle):
+        if name == "read":
+            return read_text(ev, obj.path, span)
+        return Opaque(f"file.{name}", span)
+    if isinstance(obj, KPath):
+        if name == "read_text":
+            return read_text(ev, obj.path, span)
+        if name == "joinpath":
+            return symbolic.path_join([obj, *args], span)
+        if name in ("resolve", "absolute", "expanduser") and isinstance(obj.path, str) and obj.path.startswith("/"):
+            return KPath(posixpath.normpath(obj.path))
+        if name == "as_posix":
+            return obj.path
+        return Opaque(f"Path.{name}", span)
+    from .evaluator import is_concrete
+
+    if isinstance(obj, str) and name in ("format", "join"):
+        return builtin_calls.str_format_join(ev, obj, name, args, kwargs, span)
+    if isinstance(obj, str) and name in _STR_METHODS and is_concrete(list(args)) and is_concrete(kwargs):
+        return _safe(getattr(str(obj), name), args, kwargs, span)
+    if isinstance(obj, list) and name in _LIST_METHODS:
+        if name == "extend" and args and not isinstance(args[0], (list, tuple, dict, str)):
+            obj.append(Opaque("extend with an unknown iterable", span))
+            return None
+        return _safe(getattr(obj, name), args, kwargs, span)
+    if isinstance(obj, dict) and name in _DICT_METHODS:
+        result = _safe(getattr(obj, name), args, kwargs, span)
+        if name in ("items", "keys", "values"):
+            result = list(result)
+            spans = ev.item_spans(obj)
+            if name == "items" and isinstance(spans, dict):
+                ev.register(result, [spans.get(k, (span, span))[0] for k, _ in result])
+        return result
+    if isinstance(obj, Opaque):
+        return Opaque(obj.reason, span)
+    return Opaque(f'method "{name}" cannot be evaluated statically', span)
+
+
+def _safe(fn: Any, args: list[Any], kwargs: dict[str, Any], span: Span) -> Any:
+    try:
+        return fn(*args, **kwargs)
+    except Exception:  # noqa: BLE001 - a failing pure operation is an unknown value
+        return Opaque("operation fails statically", span)
+
+
+def make_lobj(ev: "Evaluator", qual: str, args: list[Any], kwargs: dict[str, Any], node: ast.Call,
+              scope: "Scope", arg_spans: list[Span], kw_spans: dict[str, Span]) -> Any:
+    mod = scope.module or ev.main
+    span = mod.spans.of(node)
+    site = (mod.prefix, span.line, span.col)
+    index = ev.site_counts.get(site, 0) + 1
+    ev.site_counts[site] = index
+    obj = LObj(qual, args, kwargs, node, span, arg_spans, kw_spans, tuple(ev.cond_stack), {}, index)
+    obj.extra["prefix"] = mod.prefix
+    for k, v in kwargs.items():
+        if isinstance(v, (dict, list, tuple)):
+            ev.kw_kinds[(id(node), k)] = type(v).__name__
+    short = api.short(qual)
+    if qual == "launch.LaunchDescription":
+        init = obj.arg(0, "initial_entities")
+        obj.extra["entities"] = list(init) if isinstance(init, (list, tuple)) else ([] if init is None else [init])
+    elif short == "OpaqueFunction":
+        fn = obj.arg(0, "function")
+        fargs = obj.arg(1, "args") or []
+        fkwargs = obj.arg(2, "kwargs") or {}
+        if isinstance(fn, UserFunc) and isinstance(fargs, (list, tuple)) and isinstance(fkwargs, dict):
+            obj.extra["result"] = call_user(ev, fn, [ContextSym(), *fargs], dict(fkwargs), span)
+        else:
+            obj.extra["result"] = Opaque("OpaqueFunction with a function that cannot be evaluated statically", span)
+    elif short in _HANDLER_KEYS:
+        for key in _HANDLER_KEYS[short]:
+            fn = kwargs.get(key)
+            if isinstance(fn, UserFunc):
+                nargs = len(fn.node.args.posonlyargs) + len(fn.node.args.args)
+                fake = [Opaque("the event is known only at launch time", span), ContextSym()][:nargs]
+                obj.extra["entities_result"] = call_user(ev, fn, fake, {}, span)
+                break
+    ev.objects.append(obj)
+    return obj
+
+
+_HANDLER_KEYS = {
+    "OnProcessStart": ("on_start",), "OnProcessExit": ("on_exit",), "OnExecutionComplete": ("on_completion",),
+    "OnShutdown": ("on_shutdown",), "OnStateTransition": ("entities",), "OnProcessIO": ("on_stdout", "on_stderr"),
+    "OnIncludeLaunchDescription": ("entities",),
+}

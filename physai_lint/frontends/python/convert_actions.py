@@ -1,0 +1,275 @@
+"""Evaluated launch objects -> IR actions, with file-unique ids."""
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+from physai_lint.model import launch as L
+from physai_lint.model.span import Span
+from physai_lint.model.values import Unknown, Value, literal_of
+
+from . import api
+from .convert_values import opt_value, span_at, to_condition, to_params, to_pvalue, to_value
+from .runtime import CondTag, LObj, Opaque, type_name
+
+if TYPE_CHECKING:
+    from .evaluator import Evaluator
+
+_SOURCES = {
+    "PythonLaunchDescriptionSource": "python", "XMLLaunchDescriptionSource": "xml",
+    "YAMLLaunchDescriptionSource": "yaml", "FrontendLaunchDescriptionSource": "frontend",
+    "AnyLaunchDescriptionSource": "any", "LaunchDescriptionSource": "any",
+}
+_EVENTS = {
+    "OnProcessStart": ("on_process_start", "on_start"), "OnProcessExit": ("on_process_exit", "on_exit"),
+    "OnExecutionComplete": ("on_execution_complete", "on_completion"),
+    "OnShutdown": ("on_shutdown", "on_shutdown"), "OnStateTransition": ("on_state_transition", "entities"),
+    "OnProcessIO": ("on_process_io", "on_stdout"),
+    "OnIncludeLaunchDescription": ("on_include_launch_description", "entities"),
+}
+_NODE_KINDS = {"Node": "node", "LifecycleNode": "lifecycle_node", "ComposableNodeContainer": "container"}
+_ENV_OPS = {"SetEnvironmentVariable": "set", "UnsetEnvironmentVariable": "unset",
+            "AppendEnvironmentVariable": "append", "ResetEnvironment": "reset"}
+
+
+class ActionBuilder:
+    def __init__(self, ev: "Evaluator") -> None:
+        self.ev = ev
+        self.applied: list[CondTag] = []
+        self.opaque_ids: dict[str, int] = {}
+
+    def id_of(self, obj: LObj) -> str:
+        prefix = obj.extra.get("prefix", "")
+        site = (prefix, obj.span.line, obj.span.col)
+        base = f"{prefix}{obj.span.line}:{obj.span.col}"
+        return f"{base}#{obj.index}" if self.ev.site_counts.get(site, 1) > 1 else base
+
+    def _opaque(self, reason: str, span: Span) -> L.OpaqueAction:
+        base = f"opaque@{span.line}:{span.col}"
+        n = self.opaque_ids.get(base, 0) + 1
+        self.opaque_ids[base] = n
+        return L.OpaqueAction(base if n == 1 else f"{base}#{n}", span, None, reason)
+
+    def actions(self, entities: Any, span: Span) -> tuple[L.Action, ...]:
+        if isinstance(entities, (list, tuple)):
+            out: list[L.Action] = []
+            for i, item in enumerate(entities):
+                out.extend(self.entity(item, span_at(entities, i, span)))
+            return tuple(out)
+        return tuple(self.entity(entities, span))
+
+    def entity(self, v: Any, span: Span) -> list[L.Action]:
+        if v is None:
+            return []
+        if isinstance(v, (list, tuple)):
+            return list(self.actions(v, span))
+        if isinstance(v, Opaque):
+            return [self._opaque(v.reason, v.span or span)]
+        if isinstance(v, LObj) and v.qual == "launch.LaunchDescription":
+            return list(self.actions(v.extra.get("entities", []), v.span))
+        if isinstance(v, LObj) and v.qual in api.ACTION_KINDS:
+            return [self.wrapped(v)]
+        return [self._opaque(f"not a launch action ({type_name(v)})", span)]
+
+    def wrapped(self, obj: LObj) -> L.Action:
+        new_tags = [t for t in obj.tags if t not in self.applied]
+        for t in new_tags:
+            if t.condition is None:
+                return L.OpaqueAction(self.id_of(obj), obj.span, None, t.reason)
+        self.applied.extend(new_tags)
+        try:
+            action = self.action(obj)
+        finally:
+            del self.applied[len(self.applied) - len(new_tags):]
+        for depth, t in enumerate(reversed(new_tags)):
+            assert t.condition is not None
+            action = L.Group(f"{self.id_of(obj)}/{t.condition.raw}{depth}", t.condition.span, t.condition,
+                             (action,), scoped=False)
+        return action
+
+    # ---- one action -----------------------------------------------------------------------
+    def action(self, o: LObj) -> L.Action:
+        n = api.short(o.qual)
+        i, s = self.id_of(o), o.span
+        cond = to_condition(o.kwargs.get("condition"), o.arg_span(-1, "condition"))
+        if n == "DeclareLaunchArgument":
+            name = o.arg(0, "name")
+            if not isinstance(name, str):
+                return L.OpaqueAction(i, s, cond, "launch argument name cannot be evaluated statically")
+            desc = o.arg(-1, "description")
+            choices = o.arg(-1, "choices")
+            ch = tuple(str(c) for c in choices) if isinstance(choices, (list, tuple)) and all(isinstance(c, str) for c in choices) else None
+            return L.DeclareArgument(i, s, cond, str(name), opt_value(o, -1, "default_value"),
+                                     str(desc) if isinstance(desc, str) else None, ch, o.arg_span(0, "name"))
+        if n == "SetLaunchConfiguration":
+            return L.SetLaunchConfiguration(i, s, cond, self._v(o, 0, "name"), self._v(o, 1, "value"))
+        if n == "IncludeLaunchDescription":
+            return self._include(o, i, s, cond)
+        if n == "GroupAction":
+            scoped, fwd = o.arg(-1, "scoped", True), o.arg(-1, "forwarding", True)
+            lcs = o.arg(-1, "launch_configurations") or {}
+            pairs = tuple((to_value(k, s), to_value(v, s)) for k, v in lcs.items()) if isinstance(lcs, dict) else ()
+            return L.Group(i, s, cond, self.actions(o.arg(0, "actions", []), s), scoped is not False,
+                           fwd is not False, pairs)
+        if n in ("PushRosNamespace", "PushROSNamespace"):
+            return L.PushNamespace(i, s, cond, self._v(o, 0, "namespace"))
+        if n == "SetRemap":
+            return L.SetRemap(i, s, cond, self._v(o, 0, "src"), self._v(o, 1, "dst"))
+        if n == "SetParameter":
+            return L.SetParameter(i, s, cond, self._v(o, 0, "name"), to_pvalue(o.arg(1, "value"), o.arg_span(1, "value")))
+        if n == "SetParametersFromFile":
+            return L.SetParametersFromFile(i, s, cond, self._v(o, 0, "filename"))
+        if n == "SetUseSimTime":
+            return L.SetUseSimTime(i, s, cond, self._v(o, 0, "value"))
+        if n in _NODE_KINDS:
+            return self._node(o, i, s, cond, _NODE_KINDS[n])
+        if n == "LoadComposableNodes":
+            tgt = o.arg(-1, "target_container")
+            nodes = self._composables(o.arg(-1, "composable_node_descriptions"), s)
+            if isinstance(tgt, LObj) and tgt.qual in api.ACTION_KINDS:
+                return L.LoadComposableNodes(i, s, cond, None, self.id_of(tgt), nodes)
+            return L.LoadComposableNodes(i, s, cond, to_value(tgt, o.arg_span(-1, "target_container")), None, nodes)
+        if n == "ExecuteProcess":
+            return L.ExecuteProcess(i, s, cond, self._list_values(o.arg(-1, "cmd"), o.arg_span(-1, "cmd")),
+                                    opt_value(o, -1, "name"))
+        if n in ("TimerAction", "RosTimer"):
+            return L.Timer(i, s, cond, self._v(o, 0, "period"), self.actions(o.arg(1, "actions", []), s), n == "RosTimer")
+        if n == "RegisterEventHandler":
+            return self._handler(o, i, s, cond)
+        if n == "EmitEvent":
+            return self._emit(o, i, s, cond)
+        if n == "LogInfo":
+            return L.Log(i, s, cond, self._v(o, -1, "msg"))
+        if n in _ENV_OPS:
+            return L.SetEnvironment(i, s, cond, _ENV_OPS[n], opt_value(o, 0, "name"), opt_value(o, 1, "value"))  # type: ignore[arg-type]
+        if n == "Shutdown":
+            return L.Shutdown(i, s, cond, opt_value(o, -1, "reason"))
+        if n == "OpaqueFunction":
+            result = o.extra.get("result")
+            if isinstance(result, Opaque):
+                return L.OpaqueAction(i, s, cond, result.reason)
+            return L.OpaqueAction(i, s, cond, "", self.actions(result, s))
+        if n == "ResetLaunchConfigurations":
+            lcs = o.arg(0, "launch_configurations")
+            keep = tuple((to_value(k, s), to_value(v, s)) for k, v in lcs.items()) if isinstance(lcs, dict) else None
+            return L.ResetLaunchConfigurations(i, s, cond, keep)
+        return L.OpaqueAction(i, s, cond, f"{n} is not modelled")
+
+    def _v(self, o: LObj, pos: int, name: str) -> Value:
+        return opt_value(o, pos, name) or ()
+
+    def _list_values(self, v: Any, span: Span) -> tuple[Value, ...] | None:
+        if v is None:
+            return ()
+        if isinstance(v, (list, tuple)):
+            return tuple(to_value(x, span_at(v, k, span)) for k, x in enumerate(v))
+        if isinstance(v, str):
+            return (to_value(v, span),)
+        return None
+
+    def _include(self, o: LObj, i: str, s: Span, cond: L.Condition | None) -> L.Action:
+        src = o.arg(0, "launch_description_source")
+        kind = "any"
+        if isinstance(src, LObj) and api.short(src.qual) in _SOURCES:
+            kind = _SOURCES[api.short(src.qual)]
+            path = to_value(src.arg(0, "launch_file_path"), src.arg_span(0, "launch_file_path"))
+        else:
+            path = to_value(src, o.arg_span(0, "launch_description_source"))
+        la = o.arg(1, "launch_arguments")
+        la_span = o.arg_span(1, "launch_arguments")
+        args: tuple[L.IncludeArgument, ...] | None = ()
+        if isinstance(la, dict):
+            la = [(k, v) for k, v in la.items()]
+        if isinstance(la, (list, tuple)):
+            out = []
+            for k, pair in enumerate(la):
+                if not isinstance(pair, (list, tuple)) or len(pair) != 2:
+                    out = None
+                    break
+                name = pair[0] if isinstance(pair[0], str) else literal_of(to_value(pair[0], la_span))
+                if name is None:
+                    out = None
+                    break
+                out.append(L.IncludeArgument(str(name), to_value(pair[1], la_span), span_at(la, k, la_span)))
+            args = tuple(out) if out is not None else None
+        elif la is not None:
+            args = None
+        return L.Include(i, s, cond, path, args, kind)  # type: ignore[arg-type]
+
+    def _remaps(self, v: Any, span: Span) -> tuple[L.Remapping, ...]:
+        if v is None:
+            return ()
+        if isinstance(v, dict):
+            v = list(v.items())
+        if not isinstance(v, (list, tuple)):
+            reason = v.reason if isinstance(v, Opaque) else "remappings cannot be evaluated statically"
+            return (L.Remapping((Unknown(reason, span),), (Unknown(reason, span),), span),)
+        out = []
+        for k, pair in enumerate(v):
+            ps = span_at(v, k, span)
+            if isinstance(pair, (list, tuple)) and len(pair) == 2:
+                out.append(L.Remapping(to_value(pair[0], ps), to_value(pair[1], ps), ps))
+            else:
+                reason = pair.reason if isinstance(pair, Opaque) else "remapping is not a pair"
+                out.append(L.Remapping((Unknown(reason, ps),), (Unknown(reason, ps),), ps))
+        return tuple(out)
+
+    def _node(self, o: LObj, i: str, s: Span, cond: L.Condition | None, kind: str) -> L.Action:
+        kw = o.kwargs
+        fields = tuple((k, o.kw_spans[k]) for k in kw if k in o.kw_spans)
+        return L.NodeAction(
+            i, s, cond, kind,  # type: ignore[arg-type]
+            opt_value(o, -1, "package"), opt_value(o, -1, "executable"), opt_value(o, -1, "name"),
+            opt_value(o, -1, "namespace"),
+            to_params(kw.get("parameters"), o.arg_span(-1, "parameters")),
+            self._remaps(kw.get("remappings"), o.arg_span(-1, "remappings")),
+            self._list_values(kw.get("arguments"), o.arg_span(-1, "arguments")),
+            self._list_values(kw.get("ros_arguments"), o.arg_span(-1, "ros_arguments")),
+            self._composables(kw.get("composable_node_descriptions"), s) if kind == "container" else (),
+            fields, opt_value(o, -1, "exec_name"))
+
+    def _composables(self, v: Any, span: Span) -> tuple[L.ComposableNode, ...]:
+        if v is None:
+            return ()
+        items = v if isinstance(v, (list, tuple)) else [v]
+        out = []
+        for c in items:
+            if not (isinstance(c, LObj) and api.short(c.qual) == "ComposableNode"):
+                continue
+            extra: list[tuple[str, Value, Span]] = []
+            ea = c.kwargs.get("extra_arguments")
+            for d in ea if isinstance(ea, (list, tuple)) else []:
+                if isinstance(d, dict):
+                    extra.extend((str(k), to_value(x, c.span), c.arg_span(-1, "extra_arguments")) for k, x in d.items())
+            out.append(L.ComposableNode(
+                opt_value(c, -1, "package"), opt_value(c, -1, "plugin"), opt_value(c, -1, "name"),
+                opt_value(c, -1, "namespace"), to_params(c.kwargs.get("parameters"), c.arg_span(-1, "parameters")),
+                self._remaps(c.kwargs.get("remappings"), c.arg_span(-1, "remappings")), tuple(extra), c.span,
+                to_condition(c.kwargs.get("condition"), c.span), self.id_of(c)))
+        return tuple(out)
+
+    def _handler(self, o: LObj, i: str, s: Span, cond: L.Condition | None) -> L.Action:
+        h = o.arg(0, "event_handler")
+        if not (isinstance(h, LObj) and api.short(h.qual) in _EVENTS):
+            return L.OpaqueAction(i, s, cond, "event handler cannot be evaluated statically")
+        event, key = _EVENTS[api.short(h.qual)]
+        tkey = "target_lifecycle_node" if event == "on_state_transition" else "target_action"
+        target = h.kwargs.get(tkey)
+        target_id, known = None, target is None
+        if isinstance(target, LObj) and target.qual in api.ACTION_KINDS:
+            target_id, known = self.id_of(target), True
+        entities = h.extra.get("entities_result", h.kwargs.get(key))
+        if event == "on_process_io" and entities is None:
+            entities = h.kwargs.get("on_stderr")
+        goal, start = h.kwargs.get("goal_state"), h.kwargs.get("start_state")
+        return L.EventHandler(i, s, cond, event, target_id, known, self.actions(entities, h.span),  # type: ignore[arg-type]
+                              str(goal) if isinstance(goal, str) else None, str(start) if isinstance(start, str) else None)
+
+    def _emit(self, o: LObj, i: str, s: Span, cond: L.Condition | None) -> L.Action:
+        e = o.arg(-1, "event")
+        if not isinstance(e, LObj):
+            return L.EmitEvent(i, s, cond, "unknown")
+        target_id = None
+        matcher = e.kwargs.get("lifecycle_node_matcher")
+        if isinstance(matcher, LObj) and matcher.args and isinstance(matcher.args[0], LObj):
+            target_id = self.id_of(matcher.args[0])
+        return L.EmitEvent(i, s, cond, e.qual, target_id)

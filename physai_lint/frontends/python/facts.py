@@ -1,0 +1,204 @@
+"""Syntax-level facts: calls of known launch APIs (``CallFact``) and undefined names (``NameFact``).
+
+Both come from one walk of the stdlib ``ast`` tree, independent of what the evaluator reached, so
+code in branches the evaluator skipped is still checked.
+"""
+from __future__ import annotations
+
+import ast
+from typing import Iterable
+
+from physai_lint.model.launch import CallFact, NameFact
+
+from . import api
+from .evaluator import BUILTIN_NAMES
+from .positions import SpanMaker
+
+_SCOPES = (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda, ast.ListComp, ast.SetComp,
+           ast.DictComp, ast.GeneratorExp)
+
+
+def _import_map(tree: ast.Module) -> dict[str, str]:
+    out: dict[str, str] = {}
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            for a in node.names:
+                if a.asname:
+                    out[a.asname] = a.name
+                else:
+                    top = a.name.split(".")[0]
+                    out[top] = top
+        elif isinstance(node, ast.ImportFrom) and node.level == 0 and node.module:
+            for a in node.names:
+                if a.name != "*":
+                    out[a.asname or a.name] = f"{node.module}.{a.name}"
+    return out
+
+
+def _qual(expr: ast.expr, imports: dict[str, str]) -> str | None:
+    if isinstance(expr, ast.Name):
+        return imports.get(expr.id)
+    if isinstance(expr, ast.Attribute):
+        base = _qual(expr.value, imports)
+        return f"{base}.{expr.attr}" if base else None
+    return None
+
+
+def _kind(v: ast.expr) -> str:
+    if isinstance(v, (ast.List, ast.ListComp)):
+        return "list"
+    if isinstance(v, (ast.Dict, ast.DictComp)):
+        return "dict"
+    if isinstance(v, ast.Tuple):
+        return "tuple"
+    if isinstance(v, ast.Constant):
+        c = v.value
+        if isinstance(c, bool):
+            return "bool"
+        if c is None:
+            return "none"
+        if isinstance(c, (int, float, complex)):
+            return "number"
+        if isinstance(c, str):
+            return "str"
+        return "other"
+    if isinstance(v, ast.JoinedStr):
+        return "str"
+    if isinstance(v, ast.Call):
+        return "call"
+    if isinstance(v, (ast.Name, ast.Attribute)):
+        return "name"
+    return "other"
+
+
+def call_facts(tree: ast.Module, spans: SpanMaker, evaluated: dict[tuple[int, str], str]) -> list[CallFact]:
+    imports = _import_map(tree)
+    out: list[CallFact] = []
+    for node in ast.walk(tree):
+        if not isinstance(node, ast.Call):
+            continue
+        q = _qual(node.func, imports)
+        canon = api.canonical(q) if q else None
+        if canon is None:
+            continue
+        kwargs = tuple((kw.arg, spans.keyword(kw)) for kw in node.keywords if kw.arg is not None)
+        kinds = []
+        for kw in node.keywords:
+            if kw.arg is None:
+                continue
+            k = _kind(kw.value)
+            if k in ("name", "call", "other"):
+                k = evaluated.get((id(node), kw.arg), k)
+            kinds.append((kw.arg, k))
+        out.append(CallFact(canon, spans.of(node), kwargs, len(node.args), tuple(kinds)))
+    out.sort(key=lambda f: (f.span.line, f.span.col))
+    return out
+
+
+# ---- undefined names --------------------------------------------------------------------------
+
+
+def _bound_in(nodes: Iterable[ast.AST]) -> set[str]:
+    """Names bound directly in a scope (not descending into nested scopes)."""
+    out: set[str] = set()
+    stack = list(nodes)
+    while stack:
+        n = stack.pop()
+        if isinstance(n, ast.Name) and not isinstance(n.ctx, ast.Load):
+            out.add(n.id)
+        elif isinstance(n, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+            out.add(n.name)
+            stack.extend(n.decorator_list)
+            continue
+        elif isinstance(n, (ast.Import, ast.ImportFrom)):
+            for a in n.names:
+                out.add(a.asname or a.name.split(".")[0])
+        elif isinstance(n, ast.ExceptHandler) and n.name:
+            out.add(n.name)
+        elif isinstance(n, (ast.MatchAs, ast.MatchStar)) and n.name:
+            out.add(n.name)
+        elif isinstance(n, ast.MatchMapping) and n.rest:
+            out.add(n.rest)
+        elif isinstance(n, (ast.Global, ast.Nonlocal)):
+            out.update(n.names)
+        if isinstance(n, _SCOPES[3:]):
+            continue
+        stack.extend(ast.iter_child_nodes(n))
+    return out
+
+
+def _params(a: ast.arguments) -> set[str]:
+    names = [x.arg for x in a.posonlyargs + a.args + a.kwonlyargs]
+    if a.vararg:
+        names.append(a.vararg.arg)
+    if a.kwarg:
+        names.append(a.kwarg.arg)
+    return set(names)
+
+
+class _NameChecker:
+    def __init__(self, spans: SpanMaker, module_bound: set[str]) -> None:
+        self.spans = spans
+        self.module = module_bound
+        self.found: list[NameFact] = []
+
+    def check(self, node: ast.AST, chain: list[tuple[set[str], bool]]) -> None:
+        stack: list[tuple[ast.AST, list[tuple[set[str], bool]]]] = [(node, chain)]
+        while stack:
+            n, ch = stack.pop()
+            if isinstance(n, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)):
+                a = n.args
+                outer = list(a.defaults) + [d for d in a.kw_defaults if d is not None]
+                if not isinstance(n, ast.Lambda):
+                    outer += n.decorator_list
+                    if n.returns is not None:
+                        outer.append(n.returns)
+                outer += [x.annotation for x in a.posonlyargs + a.args + a.kwonlyargs if x.annotation is not None]
+                stack.extend((x, ch) for x in outer)
+                body = n.body if isinstance(n.body, list) else [n.body]
+                inner = ch + [(_params(a) | _bound_in(body), False)]
+                stack.extend((x, inner) for x in body)
+                continue
+            if isinstance(n, ast.ClassDef):
+                stack.extend((x, ch) for x in n.bases + n.decorator_list + [k.value for k in n.keywords])
+                inner = ch + [(_bound_in(n.body), True)]
+                stack.extend((x, inner) for x in n.body)
+                continue
+            if isinstance(n, (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)):
+                gens = n.generators
+                stack.append((gens[0].iter, ch))
+                inner = ch + [(_bound_in([g.target for g in gens]), False)]
+                rest: list[ast.AST] = [gens[0].target, *gens[0].ifs]
+                for g in gens[1:]:
+                    rest += [g.target, g.iter, *g.ifs]
+                rest += [n.key, n.value] if isinstance(n, ast.DictComp) else [n.elt]
+                stack.extend((x, inner) for x in rest)
+                continue
+            if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Load):
+                if not self._defined(n.id, ch):
+                    self.found.append(NameFact(n.id, self.spans.of(n)))
+                continue
+            stack.extend((c, ch) for c in ast.iter_child_nodes(n))
+
+    def _defined(self, name: str, chain: list[tuple[set[str], bool]]) -> bool:
+        for k, (bound, is_class) in enumerate(reversed(chain)):
+            if is_class and k > 0:
+                continue
+            if name in bound:
+                return True
+        return name in self.module or name in BUILTIN_NAMES
+
+
+def undefined_names(tree: ast.Module, spans: SpanMaker) -> list[NameFact]:
+    for n in ast.walk(tree):
+        if isinstance(n, ast.ImportFrom) and any(a.name == "*" for a in n.names):
+            return []
+    module_bound = _bound_in(tree.body)
+    for n in ast.walk(tree):
+        if isinstance(n, ast.Global):
+            module_bound.update(n.names)
+    checker = _NameChecker(spans, module_bound)
+    for stmt in tree.body:
+        checker.check(stmt, [])
+    checker.found.sort(key=lambda f: (f.span.line, f.span.col))
+    return checker.found

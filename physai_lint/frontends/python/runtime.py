@@ -1,0 +1,161 @@
+"""Runtime values of the partial evaluator.
+
+Known Python data (str, int, list, dict ...) is held as real Python objects; everything else is
+one of the symbolic classes below. Nothing here ever runs user code.
+"""
+from __future__ import annotations
+
+import ast
+from dataclasses import dataclass, field
+from typing import Any
+
+from physai_lint.model.launch import Condition
+from physai_lint.model.span import Span
+from physai_lint.model.values import Value
+
+
+class SStr(str):
+    """A string literal remembering where it was written (operations give back plain ``str``)."""
+
+    span: Span | None
+
+    def __new__(cls, s: str, span: Span | None) -> "SStr":
+        obj = super().__new__(cls, s)
+        obj.span = span
+        return obj
+
+
+@dataclass(eq=False)
+class Opaque:
+    """A value the evaluator cannot know."""
+
+    reason: str
+    span: Span | None = None
+
+
+@dataclass(eq=False)
+class SymStr:
+    """A Python ``str`` at description time whose content is only known symbolically
+    (``get_package_share_directory(...)``, ``LaunchConfiguration('x').perform(context)``)."""
+
+    value: Value
+
+
+@dataclass(eq=False)
+class SymBool:
+    """A comparison over launch-time values (``lc.perform(context) == 'true'``): a condition value."""
+
+    value: Value
+    negated: bool = False
+
+
+@dataclass(eq=False)
+class Ref:
+    """A module, class or function reached through an import, by qualified name."""
+
+    qual: str
+
+
+@dataclass(eq=False)
+class LObj:
+    """An instance of a recognised launch/launch_ros class (action, substitution, condition ...)."""
+
+    qual: str
+    args: list[Any]
+    kwargs: dict[str, Any]
+    node: ast.Call
+    span: Span
+    arg_spans: list[Span]
+    kw_spans: dict[str, Span]
+    tags: tuple["CondTag", ...] = ()
+    extra: dict[str, Any] = field(default_factory=dict)
+    index: int = 0  # n-th object created at this call site
+
+    def arg(self, pos: int, name: str, default: Any = None) -> Any:
+        if name in self.kwargs:
+            return self.kwargs[name]
+        if pos >= 0 and pos < len(self.args):
+            return self.args[pos]
+        return default
+
+    def has(self, pos: int, name: str) -> bool:
+        return name in self.kwargs or (pos >= 0 and pos < len(self.args))
+
+    def arg_span(self, pos: int, name: str) -> Span:
+        if name in self.kw_spans:
+            return self.kw_spans[name]
+        if 0 <= pos < len(self.arg_spans):
+            return self.arg_spans[pos]
+        return self.span
+
+
+@dataclass(frozen=True)
+class CondTag:
+    """Why an object was created conditionally: a symbolic ``Condition`` or an unknown reason."""
+
+    condition: Condition | None
+    reason: str = ""
+
+
+@dataclass(eq=False)
+class UserFunc:
+    node: ast.FunctionDef | ast.AsyncFunctionDef | ast.Lambda
+    closure: Any  # Scope
+    module: Any  # ModuleCtx
+    defaults: list[Any] = field(default_factory=list)
+    kw_defaults: dict[str, Any] = field(default_factory=dict)
+
+
+@dataclass(eq=False)
+class BoundMethod:
+    obj: Any
+    name: str
+
+
+@dataclass(eq=False)
+class FileHandle:
+    path: str | None
+    span: Span | None = None
+
+
+@dataclass(eq=False)
+class KPath:
+    """A ``pathlib.Path`` over a known string."""
+
+    path: str
+
+
+@dataclass(eq=False)
+class ContextSym:
+    """The ``context`` argument of an ``OpaqueFunction``."""
+
+
+@dataclass(eq=False)
+class LaunchConfigsSym:
+    """``context.launch_configurations``."""
+
+
+@dataclass(eq=False)
+class ModuleValue:
+    """A sibling helper module evaluated statically."""
+
+    name: str
+    globals: dict[str, Any]
+
+
+def is_symbolic_text(v: Any) -> bool:
+    from . import api
+
+    return isinstance(v, SymStr) or (isinstance(v, LObj) and api.is_substitution(v.qual))
+
+
+def is_action(v: Any) -> bool:
+    from . import api
+
+    return isinstance(v, LObj) and v.qual in api.ACTION_KINDS
+
+
+def type_name(v: Any) -> str:
+    if isinstance(v, LObj):
+        return v.qual.rsplit(".", 1)[-1]
+    return type(v).__name__

@@ -1,0 +1,177 @@
+"""Operations mixing known Python data with launch-time (symbolic) values, plus the recorder of
+facts the evaluator collects while it runs (created objects, container spans, concatenations)."""
+from __future__ import annotations
+
+import ast
+import os
+from typing import Any
+
+from physai_lint.model.launch import ConcatFact
+from physai_lint.model.span import Span
+from physai_lint.model.values import BoolOp, Compare, IfElse, PathJoin, Value
+
+from . import api
+from .convert_values import to_value
+from .runtime import KPath, LObj, Opaque, SymBool, SymStr
+
+MAX_SIZE = 100_000
+
+
+class Recorder:
+    def __init__(self) -> None:
+        self.containers: dict[int, tuple[Any, Any]] = {}
+        self.objects: list[LObj] = []
+        self.site_counts: dict[tuple[str, int, int], int] = {}
+        self.concats: dict[tuple[str, Span], ConcatFact] = {}
+        self.kw_kinds: dict[tuple[int, str], str] = {}
+        self.read_files: list[str] = []
+
+    def register(self, obj: Any, spans: Any) -> Any:
+        self.containers[id(obj)] = (obj, spans)
+        return obj
+
+    def item_spans(self, obj: Any) -> Any:
+        entry = self.containers.get(id(obj))
+        return entry[1] if entry is not None and entry[0] is obj else None
+
+    def concat(self, how: str, span: Span, detail: str) -> None:
+        key = (how, span)
+        if key not in self.concats:
+            self.concats[key] = ConcatFact(how, span, detail)  # type: ignore[arg-type]
+
+
+def is_subst(v: Any) -> bool:
+    return isinstance(v, LObj) and api.is_substitution(v.qual)
+
+
+def is_symstr(v: Any) -> bool:
+    return isinstance(v, SymStr)
+
+
+def is_textlike(v: Any) -> bool:
+    return isinstance(v, (str, SymStr)) or is_subst(v)
+
+
+def _subst_name(v: Any) -> str:
+    return api.short(v.qual) if isinstance(v, LObj) else "value"
+
+
+def binop(rec: Recorder, op: ast.operator, left: Any, right: Any, span: Span) -> Any:
+    if isinstance(op, ast.Add) and is_textlike(left) and is_textlike(right):
+        if not (isinstance(left, str) and isinstance(right, str)):
+            for v in (left, right):
+                if is_subst(v):
+                    rec.concat("plus", span, f"{_subst_name(v)} joined with + at description time")
+                    break
+            return SymStr(to_value(left, span) + to_value(right, span))
+        return None
+    if isinstance(op, ast.Div) and isinstance(left, KPath):
+        return path_join([left.path, right], span)
+    if isinstance(op, ast.Mod) and isinstance(left, str):
+        args = right if isinstance(right, tuple) else (right,)
+        if any(is_textlike(a) and not isinstance(a, str) for a in args):
+            for a in args:
+                if is_subst(a):
+                    rec.concat("percent", span, f"{_subst_name(a)} formatted with % at description time")
+            return Opaque("string formatting of a launch-time value", span)
+    return None
+
+
+def path_join(parts: list[Any], span: Span) -> Any:
+    """``os.path.join``/``Path /`` over strings or symbolic strings (no facts recorded here)."""
+    for p in parts:
+        if isinstance(p, Opaque):
+            return Opaque(p.reason, span)
+    flat = [p.path if isinstance(p, KPath) else p for p in parts]
+    if all(isinstance(p, str) for p in flat):
+        return KPath(os.path.join(*flat)) if isinstance(parts[0], KPath) else os.path.join(*flat)
+    if not all(is_textlike(p) for p in flat):
+        return Opaque("path join of values that cannot be evaluated statically", span)
+    value = (PathJoin(tuple(to_value(p, span) for p in flat), span),)
+    sym = SymStr(value)
+    return KPath(sym) if isinstance(parts[0], KPath) else sym  # type: ignore[arg-type]
+
+
+def small_enough(op: ast.operator, left: Any, right: Any) -> bool:
+    if isinstance(op, ast.Mult):
+        for a, b in ((left, right), (right, left)):
+            if isinstance(a, (str, bytes, list, tuple)) and isinstance(b, int):
+                return len(a) * b <= MAX_SIZE
+        return True
+    if isinstance(op, ast.Pow):
+        return not (isinstance(right, int) and right > 256)
+    if isinstance(op, ast.LShift):
+        return not (isinstance(right, int) and right > 4096)
+    return True
+
+
+def compare(op: ast.cmpop, left: Any, right: Any, span: Span) -> SymBool | None:
+    if not isinstance(op, (ast.Eq, ast.NotEq)):
+        return None
+    sides = (left, right)
+    if not any(isinstance(s, SymStr) or is_subst(s) for s in sides):
+        return None
+    conv = []
+    for s in sides:
+        if isinstance(s, (bool, int, float)):
+            s = str(s)
+        if not is_textlike(s):
+            return None
+        conv.append(to_value(s, span))
+    kind = "equals" if isinstance(op, ast.Eq) else "not-equals"
+    return SymBool((Compare(kind, conv[0], conv[1], span),))  # type: ignore[arg-type]
+
+
+def bool_value(s: SymBool) -> Value:
+    if s.negated:
+        return (BoolOp("not", (s.value,)),)
+    return s.value
+
+
+def combine(syms: list[SymBool], op: str, span: Span) -> SymBool:
+    return SymBool((BoolOp(op, tuple(bool_value(s) for s in syms), span),))  # type: ignore[arg-type]
+
+
+def if_else(rec: Recorder, test: Any, a: Any, b: Any, span: Span) -> Any:
+    if isinstance(test, SymBool) and is_textlike(a) and is_textlike(b):
+        return SymStr((IfElse(bool_value(test), to_value(a, span), to_value(b, span), span),))
+    if a is b:
+        return a
+    return Opaque("value depends on a condition known only at launch time", span)
+
+
+def format_value(rec: Recorder, x: Any, conversion: int, spec: Any, span: Span) -> Any:
+    if isinstance(x, Opaque):
+        return x
+    if is_textlike(x) and not isinstance(x, str):
+        if is_subst(x):
+            rec.concat("f-string", span, f"{_subst_name(x)} put into an f-string at description time")
+        return x
+    if isinstance(x, KPath):
+        return x.path
+    if not isinstance(spec, str):
+        return Opaque("f-string with an unknown format spec", span)
+    try:
+        if conversion == ord("r"):
+            x = repr(x)
+        elif conversion == ord("a"):
+            x = ascii(x)
+        elif conversion == ord("s"):
+            x = str(x)
+        if isinstance(x, str) and not spec:
+            return str(x)
+        return format(x, spec)
+    except Exception:
+        return Opaque("f-string formatting fails", span)
+
+
+def join_parts(rec: Recorder, parts: list[Any], span: Span) -> Any:
+    for p in parts:
+        if isinstance(p, Opaque):
+            return Opaque(p.reason, span)
+    if all(isinstance(p, str) for p in parts):
+        return "".join(parts)
+    value: Value = ()
+    for p in parts:
+        value = value + to_value(p, span)
+    return SymStr(value)

@@ -16,7 +16,7 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from run import HEADER, fmt, measure, startup  # noqa: E402
+from run import HEADER, fmt, measure, startup
 
 
 def main() -> None:

@@ -15,7 +15,6 @@ from __future__ import annotations
 import argparse
 import os
 import re
-import resource
 import shutil
 import statistics
 import subprocess
@@ -50,9 +49,8 @@ def discover(root: Path) -> list[Path]:
         dirnames[:] = sorted(d for d in dirnames if not d.startswith((".", "_")) and d not in SKIP_DIRS)
         for name in sorted(filenames):
             path = Path(dirpath) / name
-            if name.endswith(LAUNCH_SUFFIXES):
-                found.append(path)
-            elif name.endswith((".yaml", ".yml")) and _is_param_file(path):
+            is_param = name.endswith((".yaml", ".yml")) and _is_param_file(path)
+            if name.endswith(LAUNCH_SUFFIXES) or is_param:
                 found.append(path)
     return found
 
@@ -80,8 +78,8 @@ def parse_floor(files: list[Path]) -> float:
                 ET.fromstring(text)
             else:
                 yaml.compose(text, Loader=loader)
-        except Exception:  # noqa: BLE001 - a broken file still costs its parse attempt
-            pass
+        except Exception:  # noqa: BLE001, S112 - a broken file still costs its parse attempt
+            continue
     return time.perf_counter() - start
 
 
@@ -89,7 +87,7 @@ def wall_times(cmd: list[str], runs: int, cwd: Path) -> tuple[list[float], int]:
     times, code = [], 0
     for _ in range(runs):
         start = time.perf_counter()
-        proc = subprocess.run(cmd, cwd=cwd, stdin=subprocess.DEVNULL,
+        proc = subprocess.run(cmd, check=False, cwd=cwd, stdin=subprocess.DEVNULL,
                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         times.append(time.perf_counter() - start)
         code = proc.returncode
@@ -99,7 +97,7 @@ def wall_times(cmd: list[str], runs: int, cwd: Path) -> tuple[list[float], int]:
 def peak_rss_mib(cmd: list[str], cwd: Path) -> float:
     """Peak RSS of one run: /usr/bin/time -v when present, else getrusage in a fresh parent."""
     if Path("/usr/bin/time").exists():
-        proc = subprocess.run(["/usr/bin/time", "-v", *cmd], cwd=cwd, stdin=subprocess.DEVNULL,
+        proc = subprocess.run(["/usr/bin/time", "-v", *cmd], check=False, cwd=cwd, stdin=subprocess.DEVNULL,
                               stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
         m = re.search(r"Maximum resident set size \(kbytes\): (\d+)", proc.stderr)
         if m:
@@ -108,7 +106,7 @@ def peak_rss_mib(cmd: list[str], cwd: Path) -> float:
     probe = ("import resource, subprocess, sys; "
              "subprocess.run(sys.argv[1:], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL); "
              "print(resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)")
-    out = subprocess.run([sys.executable, "-c", probe, *cmd], cwd=cwd, capture_output=True,
+    out = subprocess.run([sys.executable, "-c", probe, *cmd], check=False, cwd=cwd, capture_output=True,
                          text=True, stdin=subprocess.DEVNULL)
     kib = int(out.stdout.strip() or 0)
     return kib / 1024 / (1024 if sys.platform == "darwin" else 1)

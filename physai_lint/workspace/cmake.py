@@ -230,7 +230,7 @@ class _Interp:
         if UNKNOWN in d:
             return None
         if d.startswith(_PREFIX):
-            d = d[len(_PREFIX) :]
+            d = d[len(_PREFIX) :].lstrip("/") or "."
         if _PREFIX in d or os.path.isabs(d):
             return None
         d = os.path.normpath(d).replace(os.sep, "/")

@@ -8,6 +8,11 @@ from dataclasses import dataclass, field
 
 from ._glob import compile_glob
 
+try:
+    from physai_lint.errors import UsageError as _BaseUsageError
+except ImportError:  # pragma: no cover - the workspace layer also works on its own
+    _BaseUsageError = Exception  # type: ignore[misc,assignment]
+
 IGNORE_MARKERS = ("COLCON_IGNORE", "AMENT_IGNORE", "CATKIN_IGNORE")
 SKIP_DIRS = frozenset({"build", "install", "log", "__pycache__"})
 LAUNCH_SUFFIXES = ("launch.py", "launch.xml", "launch.yaml")
@@ -15,8 +20,9 @@ YAML_SUFFIXES = (".yaml", ".yml")
 PARAM_SNIFF_LIMIT = 10 * 1024 * 1024
 
 
-class UsageError(Exception):
-    """A command-line usage problem (exit code 2). ``message`` is one line."""
+class UsageError(_BaseUsageError):
+    """A command-line usage problem (exit code 2). ``message`` is one line. A subclass of
+    ``physai_lint.errors.UsageError`` so the command line reports it like its own."""
 
     def __init__(self, message: str) -> None:
         super().__init__(message)

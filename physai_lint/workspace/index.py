@@ -68,7 +68,11 @@ class PackageIndex:
         self.prefixes = prefixes
         self.packages: dict[str, WorkspacePackage] = {}
         self.installed: dict[str, str] = {}  # name -> prefix
+        # package.xml files colcon would reject (path, message, line): the engine reports these
         self.problems: list[tuple[str, str, int]] = []
+        # what the static readers could not follow in setup.py / CMakeLists.txt (path, message,
+        # line): informational, the affected package's install rules are marked incomplete
+        self.notes: list[tuple[str, str, int]] = []
         self._text_cache: dict[str, str | None] = {}
         self._exists_cache: dict[str, bool] = {}
         self._installed_exes: dict[str, frozenset[str] | None] = {}
@@ -475,7 +479,7 @@ def _read_package(index: PackageIndex, pkg_dir: str) -> WorkspacePackage | None:
                                   if "CMakeLists.txt" in files else None)
     else:
         info = BuildInfo(complete=False, executables_complete=False)
-    index.problems.extend(info.problems)
+    index.notes.extend(info.problems)
     # install(DIRECTORY ... DESTINATION lib/<pkg> USE_SOURCE_PERMISSIONS): executable files in it
     lib_dest = f"lib/{name}"
     for rule in info.rules:

@@ -1,0 +1,132 @@
+"""The static readers on their own: CMake tokenizer/interpreter, setup.py evaluation, globbing."""
+from physai_lint.workspace._glob import glob_files
+from physai_lint.workspace.cmake import read_cmake_package, tokenize
+from physai_lint.workspace.setup_py import read_setup_py
+
+
+def test_tokenize_comments_quotes_brackets_lines():
+    cmds = tokenize(
+        'project(p) # c\n'
+        '#[==[ block\ninstall(FILES x DESTINATION y)\n]==]\n'
+        'set(A "a b\\"c" [[raw ${X}]] unq\\ uoted)\n'
+        'if((A AND B) OR C)\nendif()\n'
+        'message("multi\nline")\nfoo ( bar )\n')
+    assert [c.name for c in cmds] == ["project", "set", "if", "endif", "message", "foo"]
+    s = cmds[1]
+    assert [a.value for a in s.args] == ["A", 'a b"c', "raw ${X}", "unq uoted"]
+    assert [a.quoted for a in s.args] == [False, True, True, False]
+    assert s.line == 5 and cmds[2].line == 6 and cmds[5].line == 10
+    assert [a.value for a in cmds[2].args] == ["(", "A", "AND", "B", ")", "OR", "C"]
+
+
+def test_tokenize_never_raises_on_garbage():
+    for text in ["project(", 'set(A "unterminated', "#[[ open", ")))(((", "[[", "\\"]:
+        tokenize(text)
+
+
+def _cmake(tmp_path, text, files=()):
+    for f in files:
+        p = tmp_path / f
+        p.parent.mkdir(parents=True, exist_ok=True)
+        p.write_text("x")
+    return read_cmake_package(str(tmp_path), "pkg", text)
+
+
+def test_cmake_variables_lists_and_foreach(tmp_path):
+    info = _cmake(tmp_path, """
+project(pkg)
+set(NODES a;b)
+list(APPEND NODES c)
+set(CACHED x CACHE STRING "doc")
+foreach(n ${NODES})
+  add_executable(${n}_node src/${n}.cpp)
+  install(TARGETS ${n}_node DESTINATION lib/${PROJECT_NAME})
+endforeach()
+foreach(d IN ITEMS launch config)
+  install(DIRECTORY ${d} DESTINATION share/${PROJECT_NAME}/)
+endforeach()
+install(TARGETS ${UNKNOWN_VAR} DESTINATION lib/${PROJECT_NAME})
+""")
+    assert info.executables == {"a_node", "b_node", "c_node"}
+    assert not info.executables_complete  # the unknown target
+    assert [(r.dest, r.source.rsplit("/", 1)[-1]) for r in info.rules] == [
+        ("share/pkg", "launch"), ("share/pkg", "config")]
+    assert info.complete
+
+
+def test_cmake_project_name_differs_from_package(tmp_path):
+    # launch looks in lib/<package name>: a different project() name installs elsewhere
+    info = _cmake(tmp_path, "project(other)\nadd_executable(n x.cpp)\n"
+                            "install(TARGETS n DESTINATION lib/${PROJECT_NAME})\n")
+    assert info.executables == set()
+
+
+def test_cmake_user_function_and_subdirectory(tmp_path):
+    (tmp_path / "sub").mkdir()
+    (tmp_path / "sub/CMakeLists.txt").write_text("install(DIRECTORY cfg/ DESTINATION share/pkg/cfg)\n")
+    info = _cmake(tmp_path, "project(pkg)\nadd_subdirectory(sub)\n"
+                            "function(my_install)\n install(DIRECTORY x DESTINATION share)\nendfunction()\n")
+    assert [(r.dest, r.source, r.contents_only) for r in info.rules] == [
+        ("share/pkg/cfg", str(tmp_path / "sub/cfg"), True)]
+    assert info.complete
+    info2 = _cmake(tmp_path, "function(my_install)\n install(DIRECTORY x DESTINATION share)\nendfunction()\nmy_install()\n")
+    assert not info2.complete
+
+
+def test_cmake_install_prefix_destination(tmp_path):
+    info = _cmake(tmp_path, "project(pkg)\ninstall(FILES a.yaml DESTINATION ${CMAKE_INSTALL_PREFIX}/share/pkg/ RENAME b.yaml)\n")
+    r = info.rules[0]
+    assert (r.dest, r.rename) == ("share/pkg", "b.yaml")
+
+
+def test_setup_py_variants(tmp_path):
+    files = frozenset({"launch/a.launch.py", "launch/.hidden.launch.py", "config/x.yaml",
+                       "setup.py", "mod/node.py"})
+    text = """
+from os import path
+import glob as g
+from setuptools import setup
+pkg = 'pkg'
+extra = [('share/{}/cfg'.format(pkg), g.glob('config/*'))]
+setup(
+    name=pkg,
+    data_files=[
+        (path.join('share', pkg), g.glob('launch/*')),
+        ('share/%s' % pkg, ['package.xml']),
+        *extra,
+    ] + [(f'share/{pkg}/more', [p]) for p in ['config/x.yaml']],
+    entry_points={'console_scripts': 'node = mod.node:main'},
+)
+"""
+    info = read_setup_py(str(tmp_path), "pkg", files, text)
+    got = sorted((r.dest, r.source[len(str(tmp_path)) + 1:]) for r in info.rules)
+    assert got == [("share/pkg", "launch/a.launch.py"), ("share/pkg", "package.xml"),
+                   ("share/pkg/cfg", "config/x.yaml"), ("share/pkg/more", "config/x.yaml")]
+    assert info.complete
+    assert info.executables_in_bin == {"node"}  # no setup.cfg
+
+
+def test_setup_py_unknown_data_files_is_incomplete(tmp_path):
+    text = """
+import os
+from setuptools import setup
+data_files = []
+for root, dirs, files in os.walk('launch'):
+    data_files.append((root, files))
+setup(name='pkg', data_files=data_files)
+"""
+    assert not read_setup_py(str(tmp_path), "pkg", frozenset(), text).complete
+    assert not read_setup_py(str(tmp_path), "pkg", frozenset(), "setup(name=\n").complete
+    helper = "from setuptools import setup\nsetup(name='pkg', data_files=get_files())\n"
+    assert not read_setup_py(str(tmp_path), "pkg", frozenset(), helper).complete
+
+
+def test_glob_files():
+    files = frozenset({"launch/a.launch.py", "launch/b.launch.xml", "launch/sub/c.launch.py",
+                       "launch/.d.launch.py", "config/x.yaml"})
+    assert glob_files("launch/*.launch.py", files) == ["launch/a.launch.py"]
+    assert glob_files("launch/*launch.[pxy][yma]*", files) == ["launch/a.launch.py", "launch/b.launch.xml"]
+    assert glob_files("launch/**/*.py", files, recursive=True) == ["launch/a.launch.py", "launch/sub/c.launch.py"]
+    assert glob_files("launch/**/*.py", files, recursive=False) == ["launch/sub/c.launch.py"]
+    assert glob_files("./config/x.yaml", files) == ["config/x.yaml"]
+    assert glob_files("launch/.*", files) == ["launch/.d.launch.py"]

@@ -141,8 +141,14 @@ def _use_color(stream: Any, to_file: bool) -> bool:
 
 def _emit(text: str, output: Optional[str]) -> None:
     if output:
-        with open(output, "w", encoding="utf-8", newline="\n") as fh:
-            fh.write(text)
+        from physai_lint.errors import UsageError
+
+        try:
+            os.makedirs(os.path.dirname(os.path.abspath(output)), exist_ok=True)
+            with open(output, "w", encoding="utf-8", newline="\n") as fh:
+                fh.write(text)
+        except OSError as exc:
+            raise UsageError(f'cannot write "{output}": {exc.strerror or exc}') from None
     else:
         sys.stdout.write(text)
         sys.stdout.flush()

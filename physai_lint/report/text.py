@@ -98,7 +98,7 @@ def _finding(console: Any, f: Finding, cwd: str, lines_of: Callable[[str], list[
     head.append(" ")
     head.append(f.code, style=_SEVERITY_STYLE[f.severity])
     head.append(f" [{f.name}]", style="dim")
-    head.append(f" {f.message}")
+    head.append(" " + " ".join(f.message.split()))
     console.print(head)
     lines = lines_of(f.span.file) if lines_of else None
     gutter = len(str(f.span.line))

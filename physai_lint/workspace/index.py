@@ -103,12 +103,28 @@ class PackageIndex:
         return sorted(set(self.packages) | set(self.installed) | self._distro_set())
 
     def suggest(self, name: str, n: int = 3) -> list[str]:
-        """Close matches for a misspelt package name, workspace packages first."""
+        """Likely meant packages for an unknown name: close spellings (workspace first), then
+        packages having the name as a ``_``-separated component (``move_group`` ->
+        ``moveit_ros_move_group``, an executable taken for a package)."""
         out: list[str] = []
-        for pool in (sorted(self.packages), sorted(set(self.installed) | self._distro_set())):
-            for m in difflib.get_close_matches(name, pool, n=n, cutoff=0.75):
-                if m not in out and m != name:
-                    out.append(m)
+        ws = sorted(self.packages)
+        others = sorted((set(self.installed) | self._distro_set()) - set(self.packages))
+
+        def add(items: list[str]) -> None:
+            out.extend(m for m in items if m not in out and m != name)
+
+        def by_len(items: list[str]) -> list[str]:
+            return sorted(items, key=lambda p: (p not in self.packages, len(p), p))
+
+        add(difflib.get_close_matches(name, ws, n=n, cutoff=0.6))
+        suffixed = by_len([p for p in ws + others if p.endswith("_" + name)]) if len(name) >= 3 else []
+        if "_" in name:  # a multi-word name is more likely a component than a misspelling
+            add(suffixed)
+        add(difflib.get_close_matches(name, others, n=n, cutoff=0.7))
+        add(suffixed)
+        if len(name) >= 3:
+            add(by_len([p for p in ws + others
+                        if "_" + name + "_" in p or p.startswith(name + "_")]))
         return out[:n]
 
     def exec_depends(self, package: str) -> dict[str, int]:

@@ -230,3 +230,8 @@ def test_index_speed_100_packages(tmp_path):
     print(f"\nbuild_package_index: 100 packages in {dt * 1000:.1f} ms")
     assert len(idx.packages) == 100
     assert idx.executables("pkg_001") == frozenset({"n"}) and idx.executables("pkg_000") == frozenset({"n"})
+
+
+def test_suggest_executable_taken_for_package(idx):
+    assert idx.suggest("move_group")[0] == "moveit_ros_move_group"
+    assert idx.suggest("rviz")[0] == "rviz2"

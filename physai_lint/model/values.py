@@ -218,6 +218,7 @@ class PLit:
 
     value: PyScalar | tuple[PyScalar, ...]
     span: Span | None = None
+    item_spans: tuple[Span, ...] | None = None  # for a list literal: where each item is written
 
 
 @dataclass(frozen=True, slots=True)

@@ -58,6 +58,7 @@ class ResolvedParam:
     span: Span
     raw: str | None = None
     typed_by: Literal["python", "yaml", "forced"] = "python"
+    item_spans: tuple[Span, ...] | None = None  # per list item, when written as a literal list
 
 
 @dataclass(frozen=True, slots=True)

@@ -58,7 +58,8 @@ def resolve_pvalue(
     if isinstance(pv, v.PLit):
         value = pv.value
         if isinstance(value, tuple):
-            return ResolvedParam(name, _normalize_list(value), span, None, "python")
+            return ResolvedParam(name, _normalize_list(value), span, None, "python",
+                                 pv.item_spans)
         if isinstance(value, bytes):
             return ResolvedParam(name, None, span, None, "python")
         return ResolvedParam(name, value, span, None, "python")

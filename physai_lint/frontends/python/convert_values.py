@@ -153,7 +153,9 @@ def to_pvalue(v: Any, span: Span) -> PValue:
         return PLit(str(v) if isinstance(v, str) else v, v.span if isinstance(v, SStr) and v.span else span)
     if isinstance(v, (list, tuple)):
         if all(isinstance(x, _SCALARS) for x in v):
-            return PLit(tuple(str(x) if isinstance(x, str) else x for x in v), span)
+            spans = item_spans(v)
+            items = tuple(spans) if isinstance(spans, list) and len(spans) == len(v) else None
+            return PLit(tuple(str(x) if isinstance(x, str) else x for x in v), span, items)
         return PList(tuple(to_pvalue(x, span_at(v, i, span)) for i, x in enumerate(v)), span)
     if isinstance(v, LObj) and v.qual.endswith(".ParameterValue"):
         inner = v.arg(0, "value")

@@ -1,0 +1,31 @@
+"""Effective parameters per node, computed once per run and shared by the parameter rules."""
+from __future__ import annotations
+
+from typing import Any
+
+from physai_lint.checks._util import all_nodes
+from physai_lint.checks.base import CheckContext
+from physai_lint.resolve.model import NodeInstance
+
+
+def effective(ctx: CheckContext, node: NodeInstance) -> dict[str, Any]:
+    cache = ctx.options.setdefault("_effective", {})
+    key = id(node)
+    if key not in cache:
+        from physai_lint.params.effective import effective_parameters
+
+        cache[key] = effective_parameters(node.fqn, node.param_sources, ctx.param_files,
+                                          composable=node.kind == "composable_node", distro=ctx.distro)
+    return cache[key]  # type: ignore[no-any-return]
+
+
+def interface(ctx: CheckContext, node: NodeInstance) -> Any:
+    if ctx.interfaces is None:
+        return None
+    return ctx.interfaces.get(node.package, node.executable)
+
+
+def nodes_with_params(ctx: CheckContext) -> Any:
+    for launch, node in all_nodes(ctx, include_inactive=False):
+        if node.kind != "process":
+            yield launch, node

@@ -1,0 +1,108 @@
+"""Launch arguments: L101 undefined-launch-configuration, L102 unused-argument,
+L103 argument-not-in-choices, L104 missing-required-argument."""
+from __future__ import annotations
+
+from typing import Iterator
+
+from physai_lint.checks._util import suggestion
+from physai_lint.checks.base import CheckContext, rule
+from physai_lint.model.findings import Diagnostic, Related
+
+
+@rule("L101", "undefined-launch-configuration")
+def undefined_configuration(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for launch in ctx.launches:
+        declared = sorted({a.name for a in launch.declared_args})
+        for read in launch.config_reads:
+            if read.defined or read.has_default or read.active is False or read.span in seen:
+                continue
+            # A read in a file whose includer passed this name is fine; resolution saw it defined.
+            seen.add(read.span)
+            hint = suggestion(read.name, declared)
+            yield Diagnostic(
+                "L101", read.span,
+                f'launch configuration "{read.name}" is read but never declared or set'
+                + (f"; {hint}" if hint else "")
+                + f'; launch fails with "launch configuration \'{read.name}\' does not exist"',
+                help=f'declare it with DeclareLaunchArgument("{read.name}", default_value=...) / '
+                     f'<arg name="{read.name}" default="..."/>, or give LaunchConfiguration a default',
+                key=read.name)
+
+
+@rule("L102", "unused-argument")
+def unused_argument(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for launch in ctx.launches:
+        opaque_files = {s.file for s, _ in launch.opaque}
+        read_names = {r.name for r in launch.config_reads}
+        for arg in launch.declared_args:
+            if arg.name in read_names or arg.file in opaque_files or arg.span in seen:
+                continue
+            if launch.opaque and any(s.file == arg.file for s, _ in launch.opaque):
+                continue
+            if _read_anywhere(ctx, arg.file, arg.name):
+                continue
+            seen.add(arg.span)
+            yield Diagnostic(
+                "L102", arg.span,
+                f'launch argument "{arg.name}" is declared but never read',
+                help=f'read it with LaunchConfiguration("{arg.name}") / $(var {arg.name}), '
+                     "or remove the declaration",
+                key=arg.name)
+
+
+def _read_anywhere(ctx: CheckContext, file: str, name: str) -> bool:
+    """A read that resolution did not reach (e.g. only in an event handler of another launch)."""
+    for launch in ctx.launches:
+        if file in launch.files and any(r.name == name for r in launch.config_reads):
+            return True
+    return False
+
+
+@rule("L103", "argument-not-in-choices")
+def not_in_choices(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for launch in ctx.launches:
+        for arg in launch.declared_args:
+            if not arg.choices or arg.value is None or arg.value in arg.choices:
+                continue
+            span = arg.value_span or arg.span
+            if (span, arg.value) in seen:
+                continue
+            seen.add((span, arg.value))
+            options = ", ".join(f'"{c}"' for c in arg.choices)
+            yield Diagnostic(
+                "L103", span,
+                f'launch argument "{arg.name}" is "{arg.value}" (from the {arg.value_origin}), '
+                f"which is not one of its choices: {options}",
+                help=f"use one of {options}, or add the value to the declaration's choices",
+                key=f"{arg.name}={arg.value}")
+
+
+@rule("L104", "missing-required-argument")
+def missing_required(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for launch in ctx.launches:
+        for inc in launch.includes:
+            for name in inc.required_missing:
+                if inc.active is False or (inc.span, name) in seen:
+                    continue
+                seen.add((inc.span, name))
+                given = ", ".join(n for n, _, _ in inc.arguments) or "none"
+                target = inc.target_source or inc.target or "the included file"
+                yield Diagnostic(
+                    "L104", inc.span,
+                    f'include of "{_short(target)}" does not pass required argument "{name}" '
+                    f"(given: {given}); launch fails with \"Included launch description missing "
+                    f"required argument '{name}'\"",
+                    help=f'pass "{name}" in launch_arguments / <arg name="{name}" value="..."/>, '
+                         "or give the declaration a default_value",
+                    key=name)
+
+
+def _short(path: str) -> str:
+    return path.rsplit("/", 1)[-1]
+
+
+__all__ = ["Related"]

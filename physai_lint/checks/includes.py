@@ -1,0 +1,75 @@
+"""Includes: L105 include-file-missing, L106 include-undeclared-argument, L107 include-cycle."""
+from __future__ import annotations
+
+import os
+from typing import Iterator
+
+from physai_lint.checks._util import suggestion
+from physai_lint.checks.base import CheckContext, rule
+from physai_lint.model.findings import Diagnostic
+
+
+def _rel(path: str | None) -> str:
+    if not path:
+        return "?"
+    try:
+        return os.path.relpath(path).replace(os.sep, "/")
+    except ValueError:
+        return path
+
+
+@rule("L105", "include-file-missing")
+def include_missing(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for launch in ctx.launches:
+        for inc in launch.includes:
+            if inc.status not in ("missing", "not_installed") or inc.span in seen:
+                continue
+            seen.add(inc.span)
+            if inc.status == "missing":
+                msg = f'included launch file "{inc.target}" does not exist'
+                fix = "fix the path or the package name, or create the file"
+            else:
+                msg = (f'included launch file "{_rel(inc.target_source)}" exists in the source tree '
+                       f'but is not installed (launch looks for "{inc.target}")')
+                hint = ctx.packages.locate(inc.target).install_hint if inc.target else None
+                fix = hint or "install the launch folder in CMakeLists.txt or setup.py data_files"
+            yield Diagnostic("L105", inc.span, msg, help=fix, key=inc.target or "")
+
+
+@rule("L106", "include-undeclared-argument")
+def include_undeclared(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for launch in ctx.launches:
+        for inc in launch.includes:
+            if inc.declared is None or inc.status != "ok":
+                continue
+            target = (inc.target_source or inc.target or "").rsplit("/", 1)[-1]
+            for name, _value, span in inc.arguments:
+                if name in inc.declared or (span, name) in seen:
+                    continue
+                seen.add((span, name))
+                hint = suggestion(name, inc.declared)
+                declared = ", ".join(f'"{d}"' for d in inc.declared) or "no arguments"
+                yield Diagnostic(
+                    "L106", span,  # type: ignore[arg-type]
+                    f'argument "{name}" is passed to "{target}", which never declares or reads it '
+                    f"(it declares {declared}); the value is silently ignored"
+                    + (f"; {hint}" if hint else ""),
+                    help="pass an argument the included file declares, or declare this one there",
+                    key=f"{target}:{name}")
+
+
+@rule("L107", "include-cycle")
+def include_cycle(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for launch in ctx.launches:
+        for inc in launch.includes:
+            if inc.status != "cycle" or not inc.cycle or inc.span in seen:
+                continue
+            seen.add(inc.span)
+            chain = " -> ".join(f'"{_rel(p)}"' for p in inc.cycle)
+            yield Diagnostic(
+                "L107", inc.span, f"include cycle: {chain}",
+                help="break the cycle: an included file must not include (directly or not) its includer",
+                key=chain)

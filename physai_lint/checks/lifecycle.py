@@ -1,0 +1,104 @@
+"""Lifecycle managers and containers: S201 lifecycle-node-not-launched, S202 lifecycle-node-unmanaged,
+S203 container-not-launched."""
+from __future__ import annotations
+
+from typing import Any, Iterator
+
+from physai_lint.checks._params import effective
+from physai_lint.checks._util import did_you_mean
+from physai_lint.checks.base import CheckContext, rule
+from physai_lint.model.findings import Diagnostic, Related
+from physai_lint.resolve.model import LaunchResult, NodeInstance, ResolvedParamDict
+from physai_lint.resolve.names import expand_topic_name
+
+MANAGERS = {("nav2_lifecycle_manager", "lifecycle_manager")}
+MANAGED_PACKAGES_PREFIX = ("nav2_",)
+
+
+def managers(ctx: CheckContext, launch: LaunchResult) -> Iterator[tuple[NodeInstance, list[str], Any]]:
+    """(manager node, node_names, the effective parameter) for every lifecycle manager launched."""
+    for node in launch.nodes:
+        if node.active is False or (node.package, node.executable) not in MANAGERS:
+            continue
+        ep = effective(ctx, node).get("node_names")
+        if ep is None or not isinstance(ep.value, list) or not ep.certain:
+            continue
+        yield node, [str(x) for x in ep.value], ep
+
+
+def _item_span(node: NodeInstance, ep: Any, index: int) -> Any:
+    for src in node.param_sources:
+        if isinstance(src, ResolvedParamDict):
+            for prm in src.params:
+                if prm.name == "node_names" and prm.item_spans and index < len(prm.item_spans):
+                    return prm.item_spans[index]
+    return ep.origin or node.span
+
+
+@rule("S201", "lifecycle-node-not-launched")
+def not_launched(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for launch in ctx.launches:
+        nodes = [n for n in launch.nodes if n.active is not False and n.kind != "process"]
+        if any(n.fqn is None for n in nodes) or launch.opaque:
+            continue  # an unknown node might be the one it manages
+        fqns = {n.fqn for n in nodes}
+        for mgr, names, ep in managers(ctx, launch):
+            for i, name in enumerate(names):
+                target = expand_topic_name(name, mgr.name, mgr.namespace)
+                if target is None or target in fqns:
+                    continue
+                span = _item_span(mgr, ep, i)
+                if (span, target) in seen:
+                    continue
+                seen.add((span, target))
+                candidates = sorted(f for f in fqns if f)
+                close = did_you_mean(target, candidates)
+                hint = ("; did you mean " + " or ".join(f'"{c}"' for c in close) + "?") if close else ""
+                yield Diagnostic(
+                    "S201", span,
+                    f'lifecycle manager {mgr.fqn} manages "{name}" ({target}) but no such node is '
+                    f"launched{hint}; it waits for it and never brings the system up",
+                    help="remove the name from node_names or launch the node with that name",
+                    related=(Related(mgr.span, "the lifecycle manager"),), key=target)
+
+
+@rule("S202", "lifecycle-node-unmanaged")
+def unmanaged(ctx: CheckContext) -> Iterator[Diagnostic]:
+    for launch in ctx.launches:
+        mgrs = list(managers(ctx, launch))
+        if not mgrs:
+            continue
+        managed = {expand_topic_name(n, m.name, m.namespace) for m, names, _ in mgrs for n in names}
+        for node in launch.nodes:
+            if node.active is False or node.kind != "lifecycle_node" or node.fqn is None:
+                continue
+            if node.fqn not in managed:
+                yield Diagnostic(
+                    "S202", node.spans.get("name", node.span),
+                    f"lifecycle node {node.fqn} is launched but no lifecycle manager names it; it "
+                    "stays unconfigured",
+                    help=f'add "{node.name}" to a lifecycle manager\'s node_names', key=node.fqn)
+
+
+@rule("S203", "container-not-launched")
+def container_not_launched(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for launch in ctx.launches:
+        containers = {n.fqn for n in launch.nodes if n.kind == "container"}
+        if launch.opaque or any(n.kind == "container" and n.fqn is None for n in launch.nodes):
+            continue
+        for node in launch.nodes:
+            if node.kind != "composable_node" or node.container_id is not None or node.container is None:
+                continue
+            if node.container in containers or node.span in seen:
+                continue
+            seen.add(node.span)
+            close = did_you_mean(node.container, [c for c in containers if c])
+            hint = ("; did you mean " + " or ".join(f'"{c}"' for c in close) + "?") if close else ""
+            yield Diagnostic(
+                "S203", node.span,
+                f'component {node.fqn or node.executable} is loaded into container "{node.container}", '
+                f"which this launch never starts{hint}",
+                help="start the container (ComposableNodeContainer) or fix target_container",
+                key=node.container)

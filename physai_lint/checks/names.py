@@ -1,0 +1,155 @@
+"""Names and namespaces: N101 duplicate-node-name, N102 invalid-node-name, N103 invalid-namespace,
+N104 invalid-topic-name, N105 invalid-remap-name, N106 name-style, N107 duplicate-component-name."""
+from __future__ import annotations
+
+from typing import Iterator
+
+from physai_lint.checks._util import all_nodes
+from physai_lint.checks.base import CheckContext, rule
+from physai_lint.model.findings import Diagnostic, Related
+from physai_lint.resolve import names
+
+
+@rule("N101", "duplicate-node-name")
+def duplicate_node_name(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for launch in ctx.launches:
+        first: dict[str, object] = {}
+        for node in launch.nodes:
+            if node.kind == "process" or node.active is False or not node.fqn or not node.name_explicit:
+                continue
+            if node.kind == "composable_node":
+                continue  # N107 covers components; a component and a node are still checked below
+            prev = first.get(node.fqn)
+            if prev is None:
+                first[node.fqn] = node
+                continue
+            span = node.spans.get("name", node.span)
+            if span in seen:
+                continue
+            seen.add(span)
+            p = prev  # type: ignore[assignment]
+            yield Diagnostic(
+                "N101", span,
+                f'node "{node.fqn}" is launched twice (also at line {p.span.line}); '  # type: ignore[attr-defined]
+                "services, parameters and topics of the two collide",
+                help="give each node its own name or namespace (PushRosNamespace / namespace=)",
+                related=(Related(p.spans.get("name", p.span), "first launched here"),),  # type: ignore[attr-defined]
+                key=node.fqn)
+
+
+@rule("N107", "duplicate-component-name")
+def duplicate_component(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for launch in ctx.launches:
+        first: dict[tuple[str | None, str], object] = {}
+        for node in launch.nodes:
+            if node.kind != "composable_node" or node.active is False or not node.fqn or not node.name_explicit:
+                continue
+            key = (node.container, node.fqn)
+            if key not in first:
+                first[key] = node
+                continue
+            if node.span in seen:
+                continue
+            seen.add(node.span)
+            prev = first[key]
+            yield Diagnostic(
+                "N107", node.span,
+                f'component "{node.fqn}" is loaded twice into container "{node.container}"',
+                help="give each component a distinct name or namespace",
+                related=(Related(prev.span, "first loaded here"),),  # type: ignore[attr-defined]
+                key=node.fqn)
+
+
+@rule("N102", "invalid-node-name")
+def invalid_node_name(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for _, node in all_nodes(ctx):
+        if node.name is None or not node.name_explicit or node.kind == "process":
+            continue
+        reason = names.validate_node_name(node.name)
+        span = node.spans.get("name", node.span)
+        if reason and span not in seen:
+            seen.add(span)
+            yield Diagnostic("N102", span, f'node name "{node.name}" is invalid: {reason}',
+                             help="use only letters, digits and underscores, not starting with a digit; "
+                                  "put namespaces in namespace=",
+                             key=node.name)
+
+
+@rule("N103", "invalid-namespace")
+def invalid_namespace(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for launch in ctx.launches:
+        for span, raw, result in launch.pushed_namespaces:
+            if result is None or span in seen:
+                continue
+            reason = names.validate_namespace(result)
+            if reason:
+                seen.add(span)
+                yield Diagnostic(
+                    "N103", span,
+                    f'pushed namespace "{raw}" gives "{result}", which is invalid: {reason}',
+                    help='namespaces use letters, digits, "_" and "/", and no token starts with a digit',
+                    key=result)
+    bad_pushes = {result for launch in ctx.launches for _, _, result in launch.pushed_namespaces
+                  if result and names.validate_namespace(result)}
+    for _, node in all_nodes(ctx):
+        if node.namespace is None or node.kind == "process":
+            continue
+        if any(node.namespace == b or node.namespace.startswith(b + "/") for b in bad_pushes):
+            continue  # already reported where the namespace was pushed
+        span = node.spans.get("namespace")
+        if span is None or span in seen:
+            continue
+        reason = names.validate_namespace(node.namespace)
+        if reason:
+            seen.add(span)
+            yield Diagnostic("N103", span, f'namespace "{node.namespace}" is invalid: {reason}',
+                             help='namespaces use letters, digits, "_" and "/", and no token starts with a digit',
+                             key=node.namespace)
+
+
+def _remap_problem(name: str) -> str | None:
+    if name.startswith("/"):
+        return names.validate_full_topic_name(name) or (
+            None if len(name) <= names.TOPIC_MAX else f"topic name is longer than {names.TOPIC_MAX}")
+    return names.validate_topic_name(name)
+
+
+@rule("N105", "invalid-remap-name")
+def invalid_remap(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for _, node in all_nodes(ctx):
+        for rule_ in node.remaps:
+            for side, value in (("from", rule_.src), ("to", rule_.dst)):
+                if value is None or value.startswith("__") or (rule_.span, side) in seen:
+                    continue
+                reason = _remap_problem(value)
+                if reason:
+                    seen.add((rule_.span, side))
+                    yield Diagnostic(
+                        "N105", rule_.span,
+                        f'remap {side} name "{value}" is invalid: {reason}',
+                        help='topic names use letters, digits, "_", "/", a leading "~/" and {node}; '
+                             "no token may start with a digit",
+                        key=f"{side}:{value}")
+
+
+@rule("N106", "name-style")
+def name_style(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for _, node in all_nodes(ctx):
+        for what, value, span in (("node name", node.name if node.name_explicit else None, node.spans.get("name")),
+                                  ("namespace", node.namespace if node.namespace_explicit else None,
+                                   node.spans.get("namespace"))):
+            if not value or span is None or span in seen:
+                continue
+            tokens = [t for t in value.split("/") if t]
+            if any("__" in t or t.endswith("_") for t in tokens):
+                seen.add(span)
+                yield Diagnostic("N106", span,
+                                 f'{what} "{value}" uses "__" or a trailing "_" (allowed, but the ROS 2 '
+                                 "naming design reserves them)",
+                                 help="use single underscores between words", key=value)

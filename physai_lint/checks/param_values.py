@@ -1,0 +1,149 @@
+"""Parameter values against declarations: P105 parameter-type-mismatch, P107 parameter-out-of-range,
+P108 parameter-not-in-choices, P109 undeclared-parameter, P111 inconsistent-use-sim-time."""
+from __future__ import annotations
+
+from typing import Any, Iterator
+
+from physai_lint.checks._params import effective, interface, nodes_with_params
+from physai_lint.checks._util import did_you_mean
+from physai_lint.checks.base import CheckContext, rule
+from physai_lint.model.findings import Diagnostic, Related
+
+
+def _fmt(value: Any) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, str):
+        return f'"{value}"'
+    return repr(value)
+
+
+def _declared(ctx: CheckContext) -> Iterator[tuple[Any, Any, Any, Any]]:
+    """(node, effective param, declaration, interface) for params whose declaration is known."""
+    for _, node in nodes_with_params(ctx):
+        iface = interface(ctx, node)
+        if iface is None or not iface.parameters:
+            continue
+        for name, ep in sorted(effective(ctx, node).items()):
+            decl = iface.parameters.get(name)
+            if decl is not None and ep.value is not None and ep.origin is not None:
+                yield node, ep, decl, iface
+
+
+@rule("P105", "parameter-type-mismatch")
+def type_mismatch(ctx: CheckContext) -> Iterator[Diagnostic]:
+    from physai_lint.interfaces.gpl import type_compatible, value_kind
+
+    seen: set[object] = set()
+    for node, ep, decl, iface in _declared(ctx):
+        if decl.dynamic_type or type_compatible(decl.type, ep.value) is not False:
+            continue
+        if (ep.origin, ep.name) in seen:
+            continue
+        seen.add((ep.origin, ep.name))
+        got = value_kind(ep.value)
+        fix = ""
+        if decl.type == "double" and got == "integer":
+            fix = f" (write {ep.value}.0)"
+        elif decl.type == "double_array" and got == "integer_array":
+            fix = " (write every item with a decimal point, e.g. 1.0)"
+        where = f" ({decl.source})" if decl.source else ""
+        yield Diagnostic(
+            "P105", ep.origin,
+            f'parameter "{ep.name}" of {node.fqn or node.executable} is declared {decl.type}{where} '
+            f"but is given {_fmt(ep.value)}, a {got}; the node fails at start-up with "
+            f"InvalidParameterTypeException{fix}",
+            help=f"give a {decl.type} value{fix}",
+            related=((Related(decl.span, "declared here"),) if decl.span else ()),
+            key=f"{node.fqn}:{ep.name}")
+
+
+@rule("P107", "parameter-out-of-range")
+def out_of_range(ctx: CheckContext) -> Iterator[Diagnostic]:
+    yield from _validate(ctx, choices=False)
+
+
+@rule("P108", "parameter-not-in-choices")
+def not_in_choices(ctx: CheckContext) -> Iterator[Diagnostic]:
+    yield from _validate(ctx, choices=True)
+
+
+def _validate(ctx: CheckContext, choices: bool) -> Iterator[Diagnostic]:
+    from physai_lint.interfaces.gpl import type_compatible, validate
+
+    seen: set[object] = set()
+    for node, ep, decl, _ in _declared(ctx):
+        if type_compatible(decl.type, ep.value) is False:
+            continue
+        problems = []
+        is_choice = bool(decl.choices) or any(n in ("one_of", "subset_of") for n, _ in decl.validators)
+        if is_choice != choices:
+            continue
+        if decl.choices and ep.value not in decl.choices:
+            problems.append(f"{_fmt(ep.value)} is not one of {decl.choices}")
+        if decl.min is not None and isinstance(ep.value, (int, float)) and ep.value < decl.min:
+            problems.append(f"{_fmt(ep.value)} is below the minimum {decl.min}")
+        if decl.max is not None and isinstance(ep.value, (int, float)) and ep.value > decl.max:
+            problems.append(f"{_fmt(ep.value)} is above the maximum {decl.max}")
+        problems += validate(decl, ep.value)
+        if not problems or (ep.origin, ep.name) in seen:
+            continue
+        seen.add((ep.origin, ep.name))
+        code = "P108" if choices else "P107"
+        yield Diagnostic(
+            code, ep.origin,
+            f'parameter "{ep.name}" of {node.fqn or node.executable}: {"; ".join(dict.fromkeys(problems))}'
+            f"{f' ({decl.source})' if decl.source else ''}; the node rejects it at start-up",
+            help="use a value the declaration accepts",
+            related=((Related(decl.span, "declared here"),) if decl.span else ()),
+            key=f"{node.fqn}:{ep.name}")
+
+
+@rule("P109", "undeclared-parameter")
+def undeclared(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for _, node in nodes_with_params(ctx):
+        iface = interface(ctx, node)
+        if iface is None or not iface.parameters_complete or node.fqn is None:
+            continue
+        for name, ep in sorted(effective(ctx, node).items()):
+            if name in ("use_sim_time",) or name.startswith(("qos_overrides.", "ros__")):
+                continue
+            if iface.is_declared(name) is not False or ep.origin is None:
+                continue
+            if ep.node_key and "*" in ep.node_key:
+                continue  # a wildcard key hands every node every parameter: not this node's mistake
+            if (ep.origin, name) in seen:
+                continue
+            seen.add((ep.origin, name))
+            close = did_you_mean(name, iface.parameters or {})
+            hint = ("; did you mean " + " or ".join(f'"{c}"' for c in close) + "?") if close else ""
+            yield Diagnostic(
+                "P109", ep.origin,
+                f'{node.fqn} does not declare parameter "{name}"{hint}; the value is ignored',
+                help="fix the parameter name, or remove it", key=f"{node.fqn}:{name}")
+
+
+@rule("P111", "inconsistent-use-sim-time")
+def use_sim_time(ctx: CheckContext) -> Iterator[Diagnostic]:
+    for launch in ctx.launches:
+        values: dict[bool, list[tuple[Any, Any]]] = {True: [], False: []}
+        for node in launch.nodes:
+            if node.active is False or node.kind == "process":
+                continue
+            ep = effective(ctx, node).get("use_sim_time")
+            if ep is not None and isinstance(ep.value, bool) and ep.origin is not None:
+                values[ep.value].append((node, ep))
+        if not values[True] or not values[False]:
+            continue
+        minority = min(values[True], values[False], key=len)
+        majority = values[True] if minority is values[False] else values[False]
+        for node, ep in minority:
+            other = majority[0][0]
+            yield Diagnostic(
+                "P111", ep.origin,
+                f'{node.fqn or node.executable} has use_sim_time {_fmt(ep.value)} but '
+                f"{len(majority)} other node(s) of this launch (e.g. {other.fqn or other.executable}) "
+                f"have {_fmt(not ep.value)}",
+                help="set use_sim_time the same way for every node (SetParameter('use_sim_time', ...))",
+                key=f"{node.fqn}:use_sim_time")

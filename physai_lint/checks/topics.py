@@ -1,0 +1,176 @@
+"""Topics and remappings over the node/topic graph: T101 identity-remap, T102 unused-remap,
+T103 set-remap-no-effect, T104 remap-wrong-side, T201 subscription-without-publisher,
+T202 publication-without-subscriber, T203 topic-type-mismatch, T204 duplicate-service-server."""
+from __future__ import annotations
+
+from typing import Iterator
+
+from physai_lint.checks._util import all_nodes
+from physai_lint.checks.base import CheckContext, rule
+from physai_lint.graph.system import SystemGraph, build_graph, remap_target, similar
+from physai_lint.model.findings import Diagnostic, Related
+
+_CACHE_KEY = "_graphs"
+
+
+def graphs(ctx: CheckContext) -> list[SystemGraph]:
+    cached = ctx.options.get(_CACHE_KEY)
+    if cached is None or cached.get("launches") is not ctx.launches:
+        cached = {"launches": ctx.launches, "graphs": [build_graph(l, ctx.interfaces) for l in ctx.launches]}
+        ctx.options[_CACHE_KEY] = cached
+    return cached["graphs"]  # type: ignore[no-any-return]
+
+
+@rule("T101", "identity-remap")
+def identity_remap(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for _, node in all_nodes(ctx):
+        for r in node.remaps:
+            if r.origin != "node" or r.src is None or r.span in seen:
+                continue
+            src, dst = remap_target(r, node)
+            if (src is not None and src == dst) or r.src == r.dst:
+                seen.add(r.span)
+                yield Diagnostic("T101", r.span, f'remap "{r.src}" -> "{r.dst}" maps a name to itself',
+                                 help="remove the rule, or remap to the topic you meant", key=f"{r.src}")
+
+
+@rule("T102", "unused-remap")
+def unused_remap(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for g in graphs(ctx):
+        for node in g.launch.nodes:
+            if node.id not in g.known or node.active is False:
+                continue
+            eps = g.endpoints_of(node.id)
+            if any(e.expanded is None for e in eps):
+                continue
+            for i, r in enumerate(node.remaps):
+                if r.origin != "node" or r.src is None or r.src.startswith("__") or r.span in seen:
+                    continue
+                if g.remap_used(node.id, i):
+                    continue
+                src, dst = remap_target(r, node)
+                if src is None or src == dst:
+                    continue
+                if any(e.expanded == src for e in eps):
+                    continue  # shadowed by an earlier rule: not "no effect" for this rule's purpose
+                seen.add(r.span)
+                names = sorted({e.expanded for e in eps if e.expanded})
+                relative = [n for n in names if n.rsplit("/", 1)[-1] == src.rsplit("/", 1)[-1]]
+                if relative and r.src.startswith("/"):
+                    detail = (f'; the node uses "{relative[0]}" (its relative name in namespace '
+                              f'"{node.namespace}"): write the rule as "{relative[0].rsplit("/", 1)[-1]}"')
+                elif relative:
+                    detail = f'; did you mean "{relative[0]}"?'
+                else:
+                    detail = "; its names are " + ", ".join(f'"{n}"' for n in names[:6]) if names else ""
+                yield Diagnostic(
+                    "T102", r.span,
+                    f'remap "{r.src}" matches no topic of {node.fqn or node.executable} '
+                    f'(it would match "{src}"){detail}',
+                    help="remap a name the node actually uses (relative names resolve against the "
+                         "node's namespace)",
+                    key=f"{node.fqn}:{r.src}")
+
+
+@rule("T103", "set-remap-no-effect")
+def set_remap_no_effect(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for launch in ctx.launches:
+        for span, src, dst, reached in launch.set_remaps:
+            if reached or span in seen or launch.opaque:
+                continue
+            seen.add(span)
+            yield Diagnostic("T103", span, f'SetRemap "{src}" -> "{dst}" reaches no node',
+                             help="put the SetRemap before the nodes it should apply to, in the same scope",
+                             key=f"{src}:{dst}")
+
+
+@rule("T201", "subscription-without-publisher")
+def subscription_without_publisher(ctx: CheckContext) -> Iterator[Diagnostic]:
+    yield from _dangling(ctx, "subscriber", "publisher", "T201")
+
+
+@rule("T202", "publication-without-subscriber")
+def publication_without_subscriber(ctx: CheckContext) -> Iterator[Diagnostic]:
+    yield from _dangling(ctx, "publisher", "subscriber", "T202")
+
+
+def _dangling(ctx: CheckContext, mine: str, other: str, code: str) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for g in graphs(ctx):
+        if g.has_unknown_endpoints():
+            continue  # some node's topics are unknown: it might be the missing end
+        others = {e.resolved for e in g.of_kind(other)}  # type: ignore[arg-type]
+        for e in g.of_kind(mine):  # type: ignore[arg-type]
+            if e.resolved is None or e.resolved in others or e.resolved.split("/")[-1].startswith("_"):
+                continue
+            if e.resolved in ("/rosout", "/parameter_events", "/tf", "/tf_static", "/clock"):
+                continue
+            node = g.node(e.node)
+            span = node.span
+            if e.remap is not None:
+                span = node.remaps[e.remap].span
+            if (span, e.resolved) in seen:
+                continue
+            seen.add((span, e.resolved))
+            close = similar(e.resolved, others)
+            hint = (" (did you mean " + " or ".join(f'"{c}"' for c in close) + "?)") if close else ""
+            verb, missing = ("subscribes to", "nothing publishes it") if mine == "subscriber" else (
+                "publishes", "nothing subscribes to it")
+            yield Diagnostic(
+                code, span, f'{node.fqn or node.executable} {verb} "{e.resolved}" but {missing}{hint}',
+                help="remap one end so both use the same name, or launch the missing node",
+                key=f"{node.fqn}:{e.resolved}")
+
+
+@rule("T203", "topic-type-mismatch")
+def type_mismatch(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for g in graphs(ctx):
+        for topic in g.topics():
+            eps = [e for e in g.endpoints if e.resolved == topic and e.type and e.kind in ("publisher", "subscriber")]
+            types = sorted({e.type for e in eps if e.type})
+            if len(types) < 2:
+                continue
+            pubs = [e for e in eps if e.kind == "publisher"]
+            for e in eps:
+                if e.kind != "subscriber" or all(p.type == e.type for p in pubs):
+                    continue
+                node = g.node(e.node)
+                if (node.span, topic) in seen:
+                    continue
+                seen.add((node.span, topic))
+                pub = next(p for p in pubs if p.type != e.type)
+                pnode = g.node(pub.node)
+                yield Diagnostic(
+                    "T203", node.span,
+                    f'{node.fqn} subscribes to "{topic}" as "{e.type}" but {pnode.fqn} publishes "{pub.type}"',
+                    help="make both ends use the same message type, or remap one of them",
+                    related=(Related(pnode.span, f'publishes "{pub.type}" here'),), key=topic)
+
+
+@rule("T204", "duplicate-service-server")
+def duplicate_service(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for g in graphs(ctx):
+        for kind in ("service", "action_server"):
+            first: dict[str, str] = {}
+            for e in g.of_kind(kind):  # type: ignore[arg-type]
+                if e.resolved is None:
+                    continue
+                if e.resolved not in first:
+                    first[e.resolved] = e.node
+                    continue
+                if first[e.resolved] == e.node:
+                    continue
+                node, prev = g.node(e.node), g.node(first[e.resolved])
+                if (node.span, e.resolved) in seen:
+                    continue
+                seen.add((node.span, e.resolved))
+                what = "service" if kind == "service" else "action"
+                yield Diagnostic("T204", node.span,
+                                 f'{node.fqn} and {prev.fqn} both serve {what} "{e.resolved}"',
+                                 help="only one server per name: rename or namespace one of them",
+                                 related=(Related(prev.span, "the other server"),), key=e.resolved)

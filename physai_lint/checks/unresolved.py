@@ -1,0 +1,99 @@
+"""U101 unknown-package, U102 unknown-executable: references that ROS 2 cannot resolve."""
+from __future__ import annotations
+
+from typing import Iterator
+
+from physai_lint.checks._util import all_nodes, did_you_mean
+from physai_lint.checks.base import CheckContext, rule
+from physai_lint.model.findings import Diagnostic
+
+# Executables that people mistake for packages: the package that really provides them.
+KNOWN_EXECUTABLE_HOMES = {
+    "move_group": "moveit_ros_move_group",
+    "ros2_control_node": "controller_manager",
+    "spawner": "controller_manager",
+    "component_container": "rclcpp_components",
+    "component_container_mt": "rclcpp_components",
+    "component_container_isolated": "rclcpp_components",
+    "static_transform_publisher": "tf2_ros",
+    "ekf_node": "robot_localization",
+    "async_slam_toolbox_node": "slam_toolbox",
+    "sync_slam_toolbox_node": "slam_toolbox",
+    "teleop_twist_keyboard": "teleop_twist_keyboard",
+    "joy_node": "joy",
+    "map_server": "nav2_map_server",
+    "amcl": "nav2_amcl",
+    "controller_server": "nav2_controller",
+    "planner_server": "nav2_planner",
+    "bt_navigator": "nav2_bt_navigator",
+    "behavior_server": "nav2_behaviors",
+    "lifecycle_manager": "nav2_lifecycle_manager",
+}
+
+
+def _package_help(ctx: CheckContext, name: str, executable: str | None) -> tuple[str, str]:
+    hints = []
+    home = KNOWN_EXECUTABLE_HOMES.get(executable or "") or KNOWN_EXECUTABLE_HOMES.get(name)
+    if home and ctx.packages.has_package(home):
+        hints.append(f'the "{executable or name}" executable is provided by package "{home}"')
+    close = [c for c in did_you_mean(name, ctx.packages.package_names()) if c != home]
+    if close:
+        hints.append("did you mean " + " or ".join(f'"{c}"' for c in close) + "?")
+    extra = ("; " + "; ".join(hints)) if hints else ""
+    return extra, (f'use package="{home}"' if home else
+                   "check the package name, add the package to the workspace, or install it")
+
+
+@rule("U101", "unknown-package")
+def unknown_package(ctx: CheckContext) -> Iterator[Diagnostic]:
+    reported: set[tuple[object, str]] = set()
+    for _, node in all_nodes(ctx):
+        if node.package is None or ctx.packages.has_package(node.package):
+            continue
+        span = node.spans.get("package", node.span)
+        if (span, node.package) in reported:
+            continue
+        reported.add((span, node.package))
+        extra, fix = _package_help(ctx, node.package, node.executable)
+        yield Diagnostic(
+            "U101", span,
+            f'package "{node.package}" is not in the workspace or the {ctx.distro} distro{extra}',
+            help=fix, key=node.package)
+    for launch in ctx.launches:
+        for name, span, _file in launch.package_refs:
+            if span is None or ctx.packages.has_package(name) or (span, name) in reported:
+                continue
+            reported.add((span, name))
+            extra, fix = _package_help(ctx, name, None)
+            yield Diagnostic(
+                "U101", span,
+                f'package "{name}" is not in the workspace or the {ctx.distro} distro{extra}',
+                help=fix, key=name)
+
+
+@rule("U102", "unknown-executable")
+def unknown_executable(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for _, node in all_nodes(ctx):
+        if node.kind == "process" or node.package is None or node.executable is None:
+            continue
+        if node.kind == "composable_node":
+            known = ctx.packages.plugins(node.package)
+            what, where = "component plugin", "registered by rclcpp_components_register_node(s)"
+        else:
+            known = ctx.packages.executables(node.package)
+            what, where = "executable", "installed to lib/" + node.package
+        if known is None or node.executable in known:
+            continue
+        span = node.spans.get("executable" if node.kind != "composable_node" else "plugin", node.span)
+        if (span, node.executable) in seen:
+            continue
+        seen.add((span, node.executable))
+        close = did_you_mean(node.executable, known)
+        hint = (" (did you mean " + " or ".join(f'"{c}"' for c in close) + "?)") if close else ""
+        listing = ", ".join(f'"{k}"' for k in sorted(known)[:8]) or "none"
+        yield Diagnostic(
+            "U102", span,
+            f'package "{node.package}" has no {what} "{node.executable}"{hint}; it provides: {listing}',
+            help=f"use one of the package's {what}s, or make sure it is {where}",
+            key=f"{node.package}/{node.executable}")

@@ -1,0 +1,259 @@
+"""The pipeline: discover -> parse -> resolve -> check -> suppress/select/baseline -> Report."""
+from __future__ import annotations
+
+import os
+import time
+from dataclasses import dataclass, field
+from typing import Any
+
+from physai_lint.errors import ConfigError, UsageError
+from physai_lint.files import FileStore, internal_error, is_launch_file
+from physai_lint.model.findings import SEVERITY_RANK, Diagnostic, Finding
+from physai_lint.model.span import Span
+
+DISTROS = ("humble", "jazzy", "kilted", "lyrical", "rolling")
+
+
+@dataclass
+class CheckOptions:
+    paths: list[str]
+    launch_args: dict[str, str] = field(default_factory=dict)
+    workspace: str | None = None
+    distro: str = "humble"
+    interfaces: list[str] = field(default_factory=list)
+    select: list[str] | None = None
+    ignore: list[str] = field(default_factory=list)
+    extend_select: list[str] = field(default_factory=list)
+    per_file_ignores: dict[str, list[str]] = field(default_factory=dict)
+    fail_on: str = "error"
+    rule_options: dict[str, dict[str, Any]] = field(default_factory=dict)
+    baseline: str | None = None
+    write_baseline: str | None = None
+    jobs: int | None = None
+    cache: bool = True
+    respect_gitignore: bool = True
+    strict: bool = False
+    severity: dict[str, str] = field(default_factory=dict)
+    exclude: list[str] = field(default_factory=list)
+
+
+@dataclass
+class Report:
+    findings: list[Finding]
+    files: list[str]
+    cwd: str
+    duration_s: float = 0.0
+    baseline_suppressed: int = 0
+
+
+@dataclass
+class Project:
+    """Everything the checks, the graph and the plan read."""
+
+    cwd: str
+    root: str
+    store: FileStore
+    packages: Any
+    launches: list[Any]
+    entries: list[str]
+    param_files: dict[str, Any]
+    interfaces: Any
+    targets: frozenset[str]
+    diagnostics: list[Diagnostic]
+
+
+def _abs(path: str, cwd: str) -> str:
+    return os.path.normpath(os.path.join(cwd, path)).replace(os.sep, "/")
+
+
+def build_project(opts: CheckOptions, cwd: str | None = None) -> Project:
+    """Discover, parse and resolve: the model that every subcommand reads."""
+    from physai_lint import workspace as ws
+    from physai_lint.resolve.instantiate import resolve_launch
+
+    cwd = (cwd or os.getcwd()).replace(os.sep, "/")
+    if opts.distro not in DISTROS:
+        raise UsageError(f'unknown distro "{opts.distro}" (expected one of: {", ".join(DISTROS)})')
+    paths = [_abs(p, cwd) for p in opts.paths]
+    try:
+        found = ws.discover(paths, respect_gitignore=opts.respect_gitignore)
+        root = _abs(opts.workspace, cwd) if opts.workspace else ws.find_workspace_root(paths)
+    except ws.UsageError as exc:
+        raise UsageError(exc.message) from None
+    if opts.workspace and not os.path.isdir(root):
+        raise UsageError(f'workspace "{opts.workspace}" is not a directory')
+    packages = ws.build_package_index(root, opts.distro, os.environ.get("AMENT_PREFIX_PATH"))
+    store = FileStore()
+    diagnostics: list[Diagnostic] = []
+    for path, message, line in getattr(packages, "problems", []):
+        diagnostics.append(Diagnostic("X001", Span.point(path, max(line or 1, 1)), message,
+                                      help="fix package.xml so that colcon can read it"))
+
+    def loader(path: str) -> Any:
+        return store.launch(path, packages.read_text if hasattr(packages, "read_text") else None)
+
+    explicit = set(found.explicit)
+    launch_files = [p for p in found.launch_files]
+    results = []
+    for entry in launch_files:
+        results.append(resolve_launch(entry, dict(opts.launch_args), loader, packages,
+                                      explicit_entry=entry in explicit))
+    # A file that another file includes is analysed through its includer, not on its own,
+    # unless the user named it explicitly.
+    included = {f for r in results for f in r.files[1:]}
+    launches = [r for r in results if r.entry in explicit or r.entry not in included]
+    targets = set(paths) | set(found.launch_files) | set(found.param_files)
+    for r in launches:
+        if r.entry in explicit or any(r.entry.startswith(p.rstrip("/") + "/") for p in paths):
+            targets.update(r.files)
+            targets.update(_param_sources(r))
+    param_models = _load_params(store, sorted(set(found.param_files) | _all_param_sources(launches)),
+                                opts.distro, diagnostics)
+    interfaces = _interfaces(opts, cwd, packages, diagnostics)
+    diagnostics.extend(store.diagnostics)
+    for r in launches:
+        diagnostics.extend(r.diagnostics)
+    return Project(cwd, root, store, packages, launches, [r.entry for r in launches], param_models,
+                   interfaces, frozenset(targets), diagnostics)
+
+
+def _param_sources(r: Any) -> set[str]:
+    """Workspace parameter files that the nodes of a launch load (and that exist after install)."""
+    return {s.source for n in r.nodes for s in n.param_sources
+            if getattr(s, "status", None) == "ok" and getattr(s, "source", None)}
+
+
+def _all_param_sources(launches: list[Any]) -> set[str]:
+    return set().union(*(_param_sources(r) for r in launches)) if launches else set()
+
+
+def _load_params(store: FileStore, paths: list[str], distro: str, sink: list[Diagnostic]) -> dict[str, Any]:
+    from physai_lint.params.loader import load_param_file
+
+    models: dict[str, Any] = {}
+    for path in paths:
+        text = store.text(path)
+        if text is None:
+            continue
+        try:
+            model = load_param_file(path, text, distro)
+        except Exception as exc:  # a crash is a finding, not a traceback
+            sink.append(internal_error(path, "parameter file parser", exc))
+            continue
+        models[path] = model
+        # P1xx structure findings are reported by their rules (checks/param_files.py).
+        sink.extend(d for d in model.diagnostics if not d.code.startswith("P"))
+    return models
+
+
+def _interfaces(opts: CheckOptions, cwd: str, packages: Any, sink: list[Diagnostic]) -> Any:
+    from physai_lint.interfaces.store import build_interface_store
+
+    files = []
+    for f in opts.interfaces:
+        path = _abs(f, cwd)
+        if not os.path.isfile(path):
+            raise UsageError(f'interfaces file "{f}" does not exist')
+        with open(path, encoding="utf-8", errors="replace") as fh:
+            files.append((path, fh.read()))
+    store, diags = build_interface_store(files, packages, opts.distro)
+    sink.extend(diags)
+    return store
+
+
+def run_checks(project: Project, opts: CheckOptions) -> list[Diagnostic]:
+    from physai_lint.checks.base import CheckContext, load_all
+
+    ctx = CheckContext(
+        launch_files={p: lf for p, lf in project.store.launches.items() if lf is not None},
+        param_files=project.param_files, launches=project.launches, packages=project.packages,
+        interfaces=project.interfaces, distro=opts.distro, targets=project.targets,
+        options=opts.rule_options,
+    )
+    out: list[Diagnostic] = []
+    for code, impl in sorted(load_all().items()):
+        try:
+            out.extend(impl.func(ctx))
+        except Exception as exc:  # a rule that raises becomes an X003 finding; the run goes on
+            where = project.entries[0] if project.entries else project.root
+            out.append(internal_error(where, f"rule {code} ({impl.name})", exc))
+    return out
+
+
+def to_findings(diags: list[Diagnostic], catalog: dict[str, Any], severity: dict[str, str]) -> list[Finding]:
+    from physai_lint.checks.base import REGISTRY
+
+    out = []
+    for d in diags:
+        doc = catalog.get(d.code)
+        impl = REGISTRY.get(d.code)
+        name = doc.name if doc is not None else (impl.name if impl is not None else d.code.lower())
+        sev = severity.get(d.code) or (doc.severity if doc is not None else "error")
+        out.append(Finding(d.code, name, sev, d.span, d.message, d.help, d.related, d.key, d.fix))  # type: ignore[arg-type]
+    return out
+
+
+def run_check(opts: CheckOptions, cwd: str | None = None) -> Report:
+    """The whole ``check`` pipeline."""
+    from physai_lint import baseline as bl
+    from physai_lint import suppress
+    from physai_lint.catalog import load_catalog
+    from physai_lint.selection import Selector
+
+    started = time.perf_counter()
+    catalog = load_catalog()
+    selector = Selector(opts.select, opts.ignore, opts.extend_select, opts.per_file_ignores, catalog)
+    project = build_project(opts, cwd)
+    diags = project.diagnostics + run_checks(project, opts)
+    seen: set[tuple[Any, ...]] = set()
+    unique = []
+    for d in diags:
+        k = (d.code, d.span, d.message)
+        if k not in seen:
+            seen.add(k)
+            unique.append(d)
+    findings = [f for f in to_findings(unique, catalog, opts.severity)
+                if f.span.file in project.targets or f.code.startswith("X")
+                and f.span.file in project.store.texts]
+    findings = [f for f in findings if selector.enabled_for(f.code, _rel(f.span.file, project.cwd))]
+    findings, extra = _suppress(findings, project, catalog, selector, suppress)
+    findings += [f for f in to_findings(extra, catalog, opts.severity)
+                 if selector.enabled_for(f.code, _rel(f.span.file, project.cwd))]
+    suppressed = 0
+    if opts.baseline:
+        findings, suppressed = bl.load(opts.baseline).filter(findings, project.cwd)
+    findings.sort(key=Finding.sort_key)
+    if opts.write_baseline:
+        bl.write(opts.write_baseline, findings, project.cwd)
+    files = sorted(project.targets & (set(project.store.texts) | set(project.param_files)))
+    return Report(findings, files, project.cwd, time.perf_counter() - started, suppressed)
+
+
+def _suppress(findings: list[Finding], project: Project, catalog: dict[str, Any], selector: Any,
+              suppress: Any) -> tuple[list[Finding], list[Diagnostic]]:
+    from physai_lint.files import launch_format
+
+    directives = {}
+    for path, text in project.store.texts.items():
+        if text is None or path not in project.targets:
+            continue
+        fmt = launch_format(path)
+        if fmt is not None:
+            directives[path] = suppress.parse_directives(path, text, fmt)
+    return suppress.apply(findings, directives, catalog, enabled=selector.enabled)  # type: ignore[no-any-return]
+
+
+def _rel(path: str, cwd: str) -> str:
+    try:
+        return os.path.relpath(path, cwd).replace(os.sep, "/")
+    except ValueError:
+        return path
+
+
+def exit_code(report: Report, fail_on: str) -> int:
+    threshold = SEVERITY_RANK.get(fail_on, 2)
+    return 1 if any(SEVERITY_RANK[f.severity] >= threshold for f in report.findings) else 0
+
+
+__all__ = ["CheckOptions", "ConfigError", "Project", "Report", "UsageError", "build_project",
+           "exit_code", "run_check"]

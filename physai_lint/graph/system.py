@@ -1,0 +1,150 @@
+"""The node/topic graph of one resolved launch, with rcl's naming and remapping rules.
+
+Each interface name a node's code uses is expanded against the node's namespace (``~``, ``{node}``,
+relative names) and then rewritten by the node's remap rules in rcl order, first match wins
+(rcl ``rcl_remap_first_match``; the rule's own names are expanded the same way). networkx is the
+storage; rules use the typed queries below and never read networkx dicts.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any, Iterable, Literal
+
+from physai_lint.resolve.model import EffRemap, LaunchResult, NodeInstance
+from physai_lint.resolve.names import expand_topic_name
+
+if TYPE_CHECKING:
+    from physai_lint.model.span import Span
+
+EndpointKind = Literal["publisher", "subscriber", "service", "client", "action_server", "action_client"]
+KINDS: tuple[EndpointKind, ...] = ("publisher", "subscriber", "service", "client", "action_server",
+                                   "action_client")
+_ATTR = {"publisher": "publishers", "subscriber": "subscribers", "service": "services",
+         "client": "clients", "action_server": "action_servers", "action_client": "action_clients"}
+
+
+@dataclass(frozen=True)
+class Endpoint:
+    node: str  # node id
+    kind: EndpointKind
+    written: str  # the name as the code writes it
+    expanded: str | None  # before remapping
+    resolved: str | None  # after remapping; None when unknown
+    type: str | None
+    remap: int | None  # index into node.remaps of the rule that applied
+
+
+@dataclass
+class SystemGraph:
+    launch: LaunchResult
+    endpoints: list[Endpoint] = field(default_factory=list)
+    known: set[str] = field(default_factory=set)  # node ids whose interface is known
+    nx: Any = None
+
+    # ---- queries --------------------------------------------------------------------------------
+    def node(self, node_id: str) -> NodeInstance:
+        for n in self.launch.nodes:
+            if n.id == node_id:
+                return n
+        raise KeyError(node_id)
+
+    def of_kind(self, kind: EndpointKind, name: str | None = None) -> list[Endpoint]:
+        return [e for e in self.endpoints if e.kind == kind and (name is None or e.resolved == name)]
+
+    def topics(self) -> list[str]:
+        return sorted({e.resolved for e in self.endpoints
+                       if e.resolved and e.kind in ("publisher", "subscriber")})
+
+    def endpoints_of(self, node_id: str) -> list[Endpoint]:
+        return [e for e in self.endpoints if e.node == node_id]
+
+    def remap_used(self, node_id: str, index: int) -> bool:
+        return any(e.node == node_id and e.remap == index for e in self.endpoints)
+
+    def has_unknown_endpoints(self) -> bool:
+        """True when some active node's interface is unknown or a name could not be resolved."""
+        active = [n for n in self.launch.nodes if n.active is not False and n.kind != "process"]
+        return any(n.id not in self.known for n in active) or any(e.resolved is None for e in self.endpoints)
+
+
+def _expand(name: str | None, node: NodeInstance) -> str | None:
+    if name is None:
+        return None
+    return expand_topic_name(name, node.name, node.namespace)
+
+
+def apply_remaps(name: str, node: NodeInstance) -> tuple[str | None, int | None]:
+    """(remapped name, index of the matching rule) — rcl first match; unknown rules make it unknown."""
+    for i, rule in enumerate(node.remaps):
+        if rule.node_prefix is not None and rule.node_prefix != node.name:
+            if node.name is None:
+                return None, None
+            continue
+        src = _expand(rule.src, node) if rule.src is not None else None
+        if src is None:
+            if rule.src is None or node.namespace is None:
+                return None, None  # an unknown rule might match: unknown result
+            continue
+        if src == name:
+            dst = _expand(rule.dst, node) if rule.dst is not None else None
+            return dst, i
+    return name, None
+
+
+def remap_target(rule: EffRemap, node: NodeInstance) -> tuple[str | None, str | None]:
+    return _expand(rule.src, node), _expand(rule.dst, node)
+
+
+def build_graph(launch: LaunchResult, interfaces: Any, include_inactive: bool = False) -> SystemGraph:
+    g = SystemGraph(launch)
+    for node in launch.nodes:
+        if node.kind == "process" or (node.active is False and not include_inactive):
+            continue
+        iface = interfaces.get(node.package, node.executable) if interfaces is not None else None
+        if iface is None:
+            continue
+        g.known.add(node.id)
+        for kind in KINDS:
+            for ep in getattr(iface, _ATTR[kind], None) or ():
+                name = getattr(ep, "name", None)
+                if not isinstance(name, str):
+                    continue
+                expanded = _expand(name, node)
+                resolved, idx = apply_remaps(expanded, node) if expanded else (None, None)
+                g.endpoints.append(Endpoint(node.id, kind, name, expanded, resolved,
+                                            getattr(ep, "type", None), idx))
+    return g
+
+
+def to_networkx(g: SystemGraph) -> Any:
+    """A networkx DiGraph: ``n:<id>`` node vertices, ``t:<name>`` topic vertices (pub n->t, sub t->n)."""
+    import networkx as nx
+
+    dg = nx.DiGraph()
+    for n in g.launch.nodes:
+        if n.kind != "process":
+            dg.add_node(f"n:{n.id}", kind="node")
+    for e in g.endpoints:
+        if e.resolved is None:
+            continue
+        t = f"t:{e.resolved}"
+        dg.add_node(t, kind="topic")
+        if e.kind in ("publisher", "service", "action_server"):
+            dg.add_edge(f"n:{e.node}", t, kind=e.kind)
+        else:
+            dg.add_edge(t, f"n:{e.node}", kind=e.kind)
+    return dg
+
+
+def similar(name: str, candidates: Iterable[str]) -> list[str]:
+    import difflib
+
+    pool = sorted(set(candidates) - {name})
+    close = difflib.get_close_matches(name, pool, n=3, cutoff=0.6)
+    base = name.rsplit("/", 1)[-1]
+    by_base = [c for c in pool if c.rsplit("/", 1)[-1] == base and c not in close]
+    return (close + by_base)[:3]
+
+
+def span_for(node: NodeInstance, field_name: str) -> "Span":
+    return node.spans.get(field_name, node.span)

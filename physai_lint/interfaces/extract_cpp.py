@@ -1,0 +1,471 @@
+"""Interfaces from C++ sources: a small C++ tokenizer (comments, string/char/raw-string literals,
+identifiers, ``::``), then call patterns on the token stream.
+
+Recognised: ``create_publisher<T>("n", ...)``, ``create_subscription<T>("n", ...)``,
+``create_service<T>("n", ...)``, ``create_client<T>("n", ...)``, ``rclcpp_action::create_server<T>
+(node, "n", ...)`` / ``create_client``, image_transport ``create_publisher``/``create_subscription``
+(node first) and ``advertise``/``subscribe``/``advertiseCamera``/``subscribeCamera``,
+``declare_parameter<T>("n", default)`` / ``declare_parameter("n", default)`` and nav2's
+``declare_parameter_if_not_declared(node, "n", ParameterValue(default))``. Names are taken only
+from string literals or constants defined in the same file.
+"""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from physai_lint.model.span import Span
+
+from .model import Endpoint, NodeInterface, ParamDecl
+
+MAX_SOURCE = 2_000_000
+
+
+@dataclass(frozen=True, slots=True)
+class Tok:
+    kind: str  # "id", "str", "num", "char", "op"
+    text: str  # for "str": the decoded literal contents
+    line: int
+    col: int
+    end_line: int
+    end_col: int
+
+
+_ID_START = re.compile(r"[A-Za-z_]")
+_ID = re.compile(r"[A-Za-z_0-9]*")
+_NUM = re.compile(r"(?:0[xX][0-9a-fA-F']+|[0-9][0-9']*\.?[0-9']*(?:[eE][+-]?[0-9]+)?|\.[0-9]+(?:[eE][+-]?[0-9]+)?)[uUlLfF]*")
+_STR_PREFIX = ("u8R", "uR", "UR", "LR", "R", "u8", "u", "U", "L")
+
+
+def tokenize(text: str) -> list[Tok]:
+    toks: list[Tok] = []
+    i, n = 0, min(len(text), MAX_SOURCE)
+    line, line_start = 1, 0
+
+    def pos(k: int) -> tuple[int, int]:
+        return line, k - line_start + 1
+
+    while i < n:
+        c = text[i]
+        if c == "\n":
+            line += 1
+            line_start = i + 1
+            i += 1
+            continue
+        if c in " \t\r\f\v\\":
+            i += 1
+            continue
+        if text.startswith("//", i):
+            j = text.find("\n", i)
+            i = n if j < 0 else j
+            continue
+        if text.startswith("/*", i):
+            j = text.find("*/", i + 2)
+            j = n if j < 0 else j + 2
+            line += text.count("\n", i, j)
+            k = text.rfind("\n", i, j)
+            if k >= 0:
+                line_start = k + 1
+            i = j
+            continue
+        if c == "#" and text[line_start:i].strip() == "":
+            # preprocessor line: keep #define NAME "literal" as tokens, skip the rest
+            j = i
+            while True:
+                k = text.find("\n", j)
+                if k < 0:
+                    k = n
+                    break
+                if text[k - 1:k] == "\\":
+                    j = k + 1
+                    continue
+                break
+            directive = text[i:k]
+            m = re.match(r'#\s*define\s+([A-Za-z_]\w*)\s+"((?:[^"\\]|\\.)*)"\s*$', directive)
+            if m:
+                sl, sc = pos(i)
+                toks.append(Tok("op", "#define", sl, sc, sl, sc + 1))
+                toks.append(Tok("id", m.group(1), sl, sc, sl, sc + 1))
+                toks.append(Tok("str", _unescape(m.group(2)), sl, sc, sl, sc + 1))
+                toks.append(Tok("op", ";", sl, sc, sl, sc + 1))
+            line += text.count("\n", i, k)
+            kk = text.rfind("\n", i, k)
+            if kk >= 0:
+                line_start = kk + 1
+            i = k
+            continue
+        # string literals, with prefixes and raw strings
+        prefix = ""
+        if _ID_START.match(c):
+            for p in _STR_PREFIX:
+                if text.startswith(p, i) and i + len(p) < n and text[i + len(p)] == '"':
+                    prefix = p
+                    break
+        if c == '"' or prefix:
+            start = i
+            sl, sc = pos(start)
+            i += len(prefix)
+            if prefix.endswith("R"):
+                m = re.match(r'"([^()\\ \t\n]{0,16})\(', text[i:i + 20])
+                if not m:
+                    i += 1
+                    continue
+                delim = ")" + m.group(1) + '"'
+                body_start = i + m.end()
+                j = text.find(delim, body_start)
+                j = n if j < 0 else j
+                body = text[body_start:j]
+                end = min(n, j + len(delim))
+            else:
+                j = i + 1
+                buf = []
+                while j < n and text[j] != '"' and text[j] != "\n":
+                    if text[j] == "\\" and j + 1 < n:
+                        buf.append(text[j:j + 2])
+                        j += 2
+                        continue
+                    buf.append(text[j])
+                    j += 1
+                body = _unescape("".join(buf))
+                end = min(n, j + 1)
+            line += text.count("\n", start, end)
+            k = text.rfind("\n", start, end)
+            if k >= 0:
+                line_start = k + 1
+            el, ec = pos(end)
+            # adjacent literals concatenate
+            if toks and toks[-1].kind == "str" and toks[-1].end_line > 0:
+                prev = toks.pop()
+                toks.append(Tok("str", prev.text + body, prev.line, prev.col, el, ec))
+            else:
+                toks.append(Tok("str", body, sl, sc, el, ec))
+            i = end
+            continue
+        if c == "'":
+            j = i + 1
+            while j < n and text[j] != "'" and text[j] != "\n":
+                j += 2 if text[j] == "\\" else 1
+            sl, sc = pos(i)
+            toks.append(Tok("char", text[i + 1:j], sl, sc, sl, sc + (j - i + 1)))
+            i = j + 1
+            continue
+        if _ID_START.match(c):
+            m = _ID.match(text, i + 1)
+            j = m.end() if m else i + 1
+            sl, sc = pos(i)
+            toks.append(Tok("id", text[i:j], sl, sc, sl, sc + (j - i)))
+            i = j
+            continue
+        if c.isdigit() or (c == "." and i + 1 < n and text[i + 1].isdigit()):
+            m = _NUM.match(text, i)
+            j = m.end() if m and m.end() > i else i + 1
+            sl, sc = pos(i)
+            toks.append(Tok("num", text[i:j], sl, sc, sl, sc + (j - i)))
+            i = j
+            continue
+        two = text[i:i + 2]
+        sl, sc = pos(i)
+        if two in ("::", "->"):
+            toks.append(Tok("op", two, sl, sc, sl, sc + 2))
+            i += 2
+            continue
+        toks.append(Tok("op", c, sl, sc, sl, sc + 1))
+        i += 1
+    return toks
+
+
+def _unescape(s: str) -> str:
+    simple = {"n": "\n", "t": "\t", "\\": "\\", '"': '"', "'": "'", "0": "\0", "r": "\r"}
+    out = []
+    i = 0
+    while i < len(s):
+        if s[i] == "\\" and i + 1 < len(s):
+            out.append(simple.get(s[i + 1], s[i + 1]))
+            i += 2
+        else:
+            out.append(s[i])
+            i += 1
+    return "".join(out)
+
+
+# ---- token-stream helpers -----------------------------------------------------------------------
+
+_CLOSE = {"(": ")", "[": "]", "{": "}", "<": ">"}
+
+
+def _template_args(toks: list[Tok], i: int) -> tuple[str | None, int]:
+    """``toks[i]`` is ``<``: return (joined text of the args, index after ``>``)."""
+    depth = 0
+    parts: list[str] = []
+    j = i
+    while j < len(toks) and j < i + 400:
+        t = toks[j]
+        if t.kind == "op" and t.text == "<":
+            depth += 1
+            if depth > 1:
+                parts.append("<")
+        elif t.kind == "op" and t.text == ">":
+            depth -= 1
+            if depth == 0:
+                return "".join(parts), j + 1
+            parts.append(">")
+        elif t.kind == "op" and t.text in ("(", ")", ";", "{", "}"):
+            if t.text in (";", "{", "}"):
+                return None, i
+            parts.append(t.text)
+        else:
+            if parts and t.kind == "id" and parts[-1][-1:].isalnum():
+                parts.append(" ")
+            parts.append(t.text)
+        j += 1
+    return None, i
+
+
+def _call_args(toks: list[Tok], i: int) -> tuple[list[list[Tok]], int] | None:
+    """``toks[i]`` is ``(``: the top-level comma-separated arguments."""
+    if i >= len(toks) or toks[i].text != "(":
+        return None
+    args: list[list[Tok]] = [[]]
+    stack = ["("]
+    j = i + 1
+    while j < len(toks) and j < i + 4000:
+        t = toks[j]
+        if t.kind == "op" and t.text in "([{":
+            stack.append(t.text)
+        elif t.kind == "op" and t.text in ")]}":
+            stack.pop()
+            if not stack:
+                if not args[-1]:
+                    args.pop()
+                return args, j + 1
+        elif t.kind == "op" and t.text == "," and len(stack) == 1:
+            args.append([])
+            j += 1
+            continue
+        elif t.kind == "op" and t.text == ";":
+            return None
+        args[-1].append(t)
+        j += 1
+    return None
+
+
+def _constants(toks: list[Tok]) -> dict[str, str]:
+    """``NAME = "literal";`` / ``NAME[] = "literal";`` / ``NAME{"literal"}`` / ``#define``."""
+    out: dict[str, str] = {}
+    for j, t in enumerate(toks):
+        if t.kind != "str" or j < 2:
+            continue
+        nxt = toks[j + 1].text if j + 1 < len(toks) else ";"
+        if nxt not in (";", "}", ")"):
+            continue
+        k = j - 1
+        if toks[k].text in ("=", "{", "("):
+            k -= 1
+        if toks[k].text in ("#define",):
+            continue
+        if toks[k].kind == "op" and toks[k].text == "]":
+            k -= 2 if toks[k - 1].text == "[" else 3
+        if toks[j - 1].kind == "id" and toks[j - 2].text == "#define":
+            out[toks[j - 1].text] = t.text
+            continue
+        if k >= 0 and toks[k].kind == "id" and toks[k].text not in ("return", "std", "string"):
+            name = toks[k].text
+            out.setdefault(name, t.text)
+    return out
+
+
+def _name_of(arg: list[Tok], consts: dict[str, str]) -> tuple[str | None, Tok | None]:
+    arg = [t for t in arg]
+    # std::string("x") / std::string{"x"} / rclcpp::ParameterValue? no
+    strs = [t for t in arg if t.kind == "str"]
+    if len(arg) == 1 and arg[0].kind == "str":
+        return arg[0].text, arg[0]
+    if strs and len(strs) == 1 and all(t.kind in ("id", "op", "str") for t in arg) and \
+            any(t.text == "string" for t in arg) and not any(t.text == "+" for t in arg):
+        return strs[0].text, strs[0]
+    ids = [t for t in arg if t.kind == "id"]
+    if ids and all(t.kind == "id" or t.text in ("::", "this", "->", ".") for t in arg):
+        last = ids[-1]
+        if last.text in consts:
+            return consts[last.text], last
+    return None, None
+
+
+def ros_type(cpp: str | None) -> str | None:
+    """``sensor_msgs::msg::Image`` -> ``sensor_msgs/msg/Image``."""
+    if not cpp:
+        return None
+    t = cpp.replace("typename", "").replace("const ", "").strip()
+    t = re.sub(r"\s+", "", t).lstrip(":")
+    m = re.fullmatch(r"(\w+)::(msg|srv|action)::(\w+)", t)
+    if m:
+        return f"{m.group(1)}/{m.group(2)}/{m.group(3)}"
+    return None
+
+
+_CPP_PARAM_TYPES = {
+    "double": "double", "float": "double", "bool": "bool", "int": "integer", "long": "integer",
+    "int64_t": "integer", "int32_t": "integer", "int16_t": "integer", "int8_t": "integer",
+    "uint32_t": "integer", "uint16_t": "integer", "uint8_t": "integer", "size_t": "integer",
+    "unsignedint": "integer", "longlong": "integer", "std::int64_t": "integer",
+    "std::string": "string", "string": "string",
+}
+
+
+def param_type(cpp: str | None) -> str | None:
+    if not cpp:
+        return None
+    t = re.sub(r"\s+", "", cpp.replace("const", ""))
+    m = re.fullmatch(r"(?:std::)?vector<(.+?)(?:,.*)?>", t)
+    if m:
+        inner = m.group(1)
+        if inner in ("uint8_t", "std::uint8_t", "unsignedchar"):
+            return "byte_array"
+        base = _CPP_PARAM_TYPES.get(inner) or _CPP_PARAM_TYPES.get(inner.replace("std::", ""))
+        return f"{base}_array" if base else None
+    return _CPP_PARAM_TYPES.get(t) or _CPP_PARAM_TYPES.get(t.replace("std::", ""))
+
+
+def _literal_default(arg: list[Tok]) -> tuple[str | None, object]:
+    toks = [t for t in arg]
+    # unwrap rclcpp::ParameterValue(x) / std::string("x") / std::vector<T>{...}
+    texts = [t.text for t in toks]
+    if "ParameterValue" in texts:
+        k = texts.index("ParameterValue")
+        inner = _call_args(toks, k + 1) if k + 1 < len(toks) else None
+        if inner and inner[0]:
+            return _literal_default(inner[0][0])
+        return None, None
+    neg = False
+    if toks and toks[0].text in ("-", "+"):
+        neg = toks[0].text == "-"
+        toks = toks[1:]
+    if len(toks) == 1:
+        t = toks[0]
+        if t.kind == "num":
+            txt = t.text.replace("'", "").rstrip("uUlLfF") if not t.text.lower().startswith("0x") \
+                else t.text.replace("'", "").rstrip("uUlL")
+            try:
+                if re.fullmatch(r"0[xX][0-9a-fA-F]+|[0-9]+", txt):
+                    v = int(txt, 0) if not re.fullmatch(r"0[0-7]+", txt) else int(txt, 8)
+                    return "integer", -v if neg else v
+                v = float(txt)
+                return "double", -v if neg else v
+            except ValueError:
+                return None, None
+        if t.kind == "id" and t.text in ("true", "false"):
+            return "bool", t.text == "true"
+        if t.kind == "str":
+            return "string", t.text
+    strs = [t for t in toks if t.kind == "str"]
+    if len(strs) == 1 and "string" in texts and "+" not in texts:
+        return "string", strs[0].text
+    if len(toks) >= 1 and toks[0].text in ("std",) and "vector" in texts:
+        k = texts.index("vector")
+        if k + 1 < len(toks) and toks[k + 1].text == "<":
+            inner, _ = _template_args(toks, k + 1)
+            pt = param_type(f"std::vector<{inner}>") if inner else None
+            return pt, None
+    return None, None
+
+
+_ENDPOINT_CALLS = {
+    "create_publisher": "publishers", "create_subscription": "subscribers",
+    "create_service": "services", "create_client": "clients",
+}
+
+
+def extract_cpp(files: list[tuple[str, str]]) -> NodeInterface:
+    iface = NodeInterface(publishers=[], subscribers=[], services=[], clients=[],
+                          action_servers=[], action_clients=[], parameters={},
+                          parameters_complete=False, source="extracted from C++ sources")
+    for path, text in files:
+        try:
+            _extract_one(path, text, iface)
+        except (RecursionError, IndexError, ValueError):
+            continue
+    return iface
+
+
+def _span(path: str, t: Tok | None) -> Span | None:
+    if t is None:
+        return None
+    return Span(path, t.line, t.col, t.end_line, t.end_col)
+
+
+def _extract_one(path: str, text: str, iface: NodeInterface) -> None:
+    toks = tokenize(text)
+    consts = _constants(toks)
+    for i, t in enumerate(toks):
+        if t.kind != "id":
+            continue
+        name = t.text
+        prev = toks[i - 1].text if i > 0 else ""
+        prev2 = toks[i - 2].text if i > 1 else ""
+        if name in _ENDPOINT_CALLS or name in ("create_server",):
+            j = i + 1
+            targ = None
+            if j < len(toks) and toks[j].text == "<":
+                targ, j = _template_args(toks, j)
+            parsed = _call_args(toks, j)
+            if parsed is None:
+                continue
+            args, _ = parsed
+            ns = prev2 if prev == "::" else ""
+            if ns == "rclcpp_action":
+                if len(args) >= 2:
+                    n, tok = _name_of(args[1], consts)
+                    if n is not None:
+                        kind = "action_servers" if name == "create_server" else "action_clients"
+                        getattr(iface, kind).append(Endpoint(n, ros_type(targ), _span(path, tok)))
+                continue
+            if ns == "image_transport":
+                if len(args) >= 2 and name in ("create_publisher", "create_subscription"):
+                    n, tok = _name_of(args[1], consts)
+                    if n is not None:
+                        kind = _ENDPOINT_CALLS[name]
+                        getattr(iface, kind).append(
+                            Endpoint(n, "sensor_msgs/msg/Image", _span(path, tok)))
+                continue
+            if name == "create_server" or not args or targ is None:
+                continue
+            n, tok = _name_of(args[0], consts)
+            if n is not None:
+                getattr(iface, _ENDPOINT_CALLS[name]).append(
+                    Endpoint(n, ros_type(targ), _span(path, tok)))
+        elif name in ("advertise", "subscribe", "advertiseCamera", "subscribeCamera") and \
+                prev in (".", "->"):
+            parsed = _call_args(toks, i + 1)
+            if parsed is None or not parsed[0]:
+                continue
+            n, tok = _name_of(parsed[0][0], consts)
+            if n is None:
+                continue
+            kind = "publishers" if name.startswith("advertise") else "subscribers"
+            getattr(iface, kind).append(Endpoint(n, "sensor_msgs/msg/Image", _span(path, tok)))
+        elif name in ("declare_parameter", "declare_parameter_if_not_declared"):
+            j = i + 1
+            targ = None
+            if j < len(toks) and toks[j].text == "<":
+                targ, j = _template_args(toks, j)
+            parsed = _call_args(toks, j)
+            if parsed is None or not parsed[0]:
+                continue
+            args = parsed[0]
+            k = 1 if name == "declare_parameter_if_not_declared" else 0
+            if len(args) <= k:
+                continue
+            n, tok = _name_of(args[k], consts)
+            if n is None:
+                continue
+            ptype = param_type(targ)
+            default = None
+            has_default = False
+            if len(args) > k + 1:
+                dtype, default = _literal_default(args[k + 1])
+                has_default = dtype is not None and default is not None
+                if ptype is None:
+                    ptype = dtype
+            decl = ParamDecl(n, ptype, default, span=_span(path, tok), source=path,
+                             has_default=has_default)
+            iface.parameters.setdefault(n, decl)  # type: ignore[union-attr]

@@ -1,0 +1,204 @@
+"""Interfaces from rclpy sources, read with ``ast`` (never imported or run).
+
+Recognised: ``create_publisher(T, 'n', qos)``, ``create_subscription(T, 'n', cb, qos)``,
+``create_service(T, 'n', cb)``, ``create_client(T, 'n')``, ``ActionServer(node, T, 'n', ...)``,
+``ActionClient(node, T, 'n')``, ``declare_parameter('n', default)`` and
+``declare_parameters(namespace, [('n', default), ...])``. Names come from string literals or
+module-level string constants; message types from the file's imports.
+"""
+from __future__ import annotations
+
+import ast
+from typing import Any
+
+from physai_lint.model.span import Span
+
+from .model import Endpoint, NodeInterface, ParamDecl
+
+MAX_SOURCE = 2_000_000
+
+_CALLS = {
+    "create_publisher": ("publishers", 0, 1, "msg_type", "topic"),
+    "create_subscription": ("subscribers", 0, 1, "msg_type", "topic"),
+    "create_service": ("services", 0, 1, "srv_type", "srv_name"),
+    "create_client": ("clients", 0, 1, "srv_type", "srv_name"),
+    "ActionServer": ("action_servers", 1, 2, "action_type", "action_name"),
+    "ActionClient": ("action_clients", 1, 2, "action_type", "action_name"),
+}
+
+_PARAM_TYPE_NAMES = {
+    "BOOL": "bool", "INTEGER": "integer", "DOUBLE": "double", "STRING": "string",
+    "BOOL_ARRAY": "bool_array", "INTEGER_ARRAY": "integer_array",
+    "DOUBLE_ARRAY": "double_array", "STRING_ARRAY": "string_array", "BYTE_ARRAY": "byte_array",
+}
+
+
+def _imports(tree: ast.Module) -> dict[str, str]:
+    """local name -> dotted origin (``String`` -> ``std_msgs.msg.String``)."""
+    out: dict[str, str] = {}
+    for node in ast.walk(tree):
+        if isinstance(node, ast.ImportFrom) and node.module:
+            for a in node.names:
+                out[a.asname or a.name] = f"{node.module}.{a.name}"
+        elif isinstance(node, ast.Import):
+            for a in node.names:
+                out[a.asname or a.name.split(".")[0]] = a.name if a.asname else a.name.split(".")[0]
+    return out
+
+
+def _dotted(node: ast.AST) -> str | None:
+    if isinstance(node, ast.Name):
+        return node.id
+    if isinstance(node, ast.Attribute):
+        base = _dotted(node.value)
+        return f"{base}.{node.attr}" if base else None
+    return None
+
+
+def _ros_type(node: ast.AST | None, imports: dict[str, str]) -> str | None:
+    if node is None:
+        return None
+    d = _dotted(node)
+    if not d:
+        return None
+    head, _, rest = d.partition(".")
+    full = imports.get(head, head) + ("." + rest if rest else "")
+    parts = full.split(".")
+    if len(parts) >= 3 and parts[-2] in ("msg", "srv", "action"):
+        return f"{parts[-3]}/{parts[-2]}/{parts[-1]}"
+    return None
+
+
+def _const_strings(tree: ast.Module) -> dict[str, str]:
+    out: dict[str, str] = {}
+    for node in tree.body:
+        if isinstance(node, ast.Assign) and isinstance(node.value, ast.Constant) and \
+                isinstance(node.value.value, str):
+            for t in node.targets:
+                if isinstance(t, ast.Name):
+                    out[t.id] = node.value.value
+        elif isinstance(node, ast.AnnAssign) and isinstance(node.target, ast.Name) and \
+                isinstance(node.value, ast.Constant) and isinstance(node.value.value, str):
+            out[node.target.id] = node.value.value
+    return out
+
+
+def _str_of(node: ast.AST | None, consts: dict[str, str]) -> str | None:
+    if isinstance(node, ast.Constant) and isinstance(node.value, str):
+        return node.value
+    if isinstance(node, ast.Name) and node.id in consts:
+        return consts[node.id]
+    return None
+
+
+def _arg(call: ast.Call, pos: int, kw: str) -> ast.AST | None:
+    for k in call.keywords:
+        if k.arg == kw:
+            return k.value
+    if pos < len(call.args) and not any(isinstance(a, ast.Starred) for a in call.args[:pos + 1]):
+        return call.args[pos]
+    return None
+
+
+def _span(path: str, node: ast.AST) -> Span:
+    line = getattr(node, "lineno", 1)
+    col = getattr(node, "col_offset", 0) + 1
+    eline = getattr(node, "end_lineno", line) or line
+    ecol = (getattr(node, "end_col_offset", col) or col) + 1
+    return Span(path, line, col, eline, max(ecol, col + 1) if eline == line else ecol)
+
+
+def _literal(node: ast.AST | None) -> tuple[bool, Any]:
+    if node is None:
+        return False, None
+    try:
+        return True, ast.literal_eval(node)
+    except (ValueError, TypeError, SyntaxError, MemoryError, RecursionError):
+        return False, None
+
+
+def _kind_of_value(v: Any) -> str | None:
+    from .gpl import value_kind
+
+    return value_kind(v)
+
+
+def _param_from(name: str, value_node: ast.AST | None, path: str, span: Span) -> ParamDecl:
+    ok, value = _literal(value_node)
+    ptype = None
+    if ok and value is not None:
+        ptype = _kind_of_value(value)
+        if isinstance(value, list) and value and ptype is None:
+            ptype = None
+    elif value_node is not None:
+        d = _dotted(value_node) or ""
+        last = d.rsplit(".", 1)[-1]
+        if ".Type." in f".{d}" or d.startswith("Type."):
+            ptype = _PARAM_TYPE_NAMES.get(last)
+    return ParamDecl(name, ptype, value if ok else None, span=span, source=path,
+                     has_default=ok and value is not None)
+
+
+def extract_py(files: list[tuple[str, str]]) -> NodeInterface:
+    iface = NodeInterface(publishers=[], subscribers=[], services=[], clients=[],
+                          action_servers=[], action_clients=[], parameters={},
+                          parameters_complete=False, source="extracted from Python sources")
+    for path, text in files:
+        if len(text) > MAX_SOURCE:
+            continue
+        try:
+            tree = ast.parse(text, filename=path)
+        except (SyntaxError, ValueError, RecursionError, MemoryError):
+            continue
+        try:
+            _extract_one(path, tree, iface)
+        except RecursionError:
+            continue
+    return iface
+
+
+def _extract_one(path: str, tree: ast.Module, iface: NodeInterface) -> None:
+    imports = _imports(tree)
+    consts = _const_strings(tree)
+    params = iface.parameters
+    assert params is not None
+    for node in ast.walk(tree):
+        if not isinstance(node, ast.Call):
+            continue
+        fn = node.func
+        fname = fn.attr if isinstance(fn, ast.Attribute) else fn.id if isinstance(fn, ast.Name) \
+            else None
+        if fname in _CALLS:
+            kind, tpos, npos, tkw, nkw = _CALLS[fname]
+            if fname in ("ActionServer", "ActionClient"):
+                pass
+            elif not isinstance(fn, ast.Attribute):
+                continue
+            name_node = _arg(node, npos, nkw)
+            name = _str_of(name_node, consts)
+            if name is None or name_node is None:
+                continue
+            rtype = _ros_type(_arg(node, tpos, tkw), imports)
+            getattr(iface, kind).append(Endpoint(name, rtype, _span(path, name_node)))
+        elif fname == "declare_parameter" and isinstance(fn, ast.Attribute):
+            name_node = _arg(node, 0, "name")
+            name = _str_of(name_node, consts)
+            if name is None or name_node is None:
+                continue
+            params.setdefault(name, _param_from(name, _arg(node, 1, "value"), path,
+                                                _span(path, name_node)))
+        elif fname == "declare_parameters" and isinstance(fn, ast.Attribute):
+            ns = _str_of(_arg(node, 0, "namespace"), consts) or ""
+            plist = _arg(node, 1, "parameters")
+            if not isinstance(plist, (ast.List, ast.Tuple)):
+                continue
+            for item in plist.elts:
+                if not isinstance(item, (ast.Tuple, ast.List)) or not item.elts:
+                    continue
+                pname = _str_of(item.elts[0], consts)
+                if pname is None:
+                    continue
+                full = f"{ns}.{pname}" if ns else pname
+                value_node = item.elts[1] if len(item.elts) > 1 else None
+                params.setdefault(full, _param_from(full, value_node, path,
+                                                    _span(path, item.elts[0])))

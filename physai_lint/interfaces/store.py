@@ -1,0 +1,346 @@
+"""``InterfaceStore``: what each ``(package, executable)`` declares, merged from (highest first)
+
+1. ``--interfaces`` files (contracts/README.md format),
+2. generate_parameter_library YAML linked to the executable (``packages.parameter_yaml_for``),
+3. extraction from the workspace sources (``packages.source_files_for``, when the index has it),
+4. the bundled declarations in ``schemas/`` for well-known packages.
+
+Per endpoint category the highest source that lists it wins; parameters merge per name (higher
+sources win) and are complete when a complete source (gpl, a complete bundled file, an interfaces
+entry with ``parameters_complete: true``) provides them.
+"""
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any, Iterable, Protocol
+
+import yaml
+
+from physai_lint.model.findings import Diagnostic
+from physai_lint.model.span import Span
+
+from .extract_cpp import extract_cpp
+from .extract_py import extract_py
+from .gpl import _span as node_span
+from .gpl import compose, normalize_type, parse_gpl, to_python
+from .model import ENDPOINT_KINDS, Endpoint, NodeInterface, ParamDecl
+
+
+class PackageIndexLike(Protocol):
+    def parameter_yaml_for(self, package: str, executable: str) -> list[str]: ...
+    def read_text(self, path: str) -> str | None: ...
+
+
+Key = tuple[str, str]
+
+
+def _schemas_dir() -> Path | None:
+    try:
+        from importlib.resources import files
+
+        p = files("physai_lint").joinpath("_schemas")
+        if p.is_dir():  # type: ignore[union-attr]
+            return Path(str(p))
+    except (ModuleNotFoundError, TypeError, AttributeError):
+        pass
+    here = Path(__file__).resolve().parents[2] / "schemas"
+    return here if here.is_dir() else None
+
+
+# ---- interfaces files -------------------------------------------------------------------------
+
+def _endpoints(node: yaml.Node, path: str, diags: list[Diagnostic]) -> list[Endpoint] | None:
+    if isinstance(node, yaml.ScalarNode) and node.value in ("", "~", "null"):
+        return []
+    if not isinstance(node, yaml.SequenceNode):
+        diags.append(Diagnostic("P104", node_span(path, node),
+                                "expected a list of names or of {name, type}"))
+        return None
+    out: list[Endpoint] = []
+    for item in node.value:
+        if isinstance(item, yaml.ScalarNode):
+            out.append(Endpoint(item.value, None, node_span(path, item)))
+        elif isinstance(item, yaml.MappingNode):
+            fields = {k.value: v for k, v in item.value if isinstance(k, yaml.ScalarNode)}
+            name = fields.get("name")
+            if not isinstance(name, yaml.ScalarNode):
+                diags.append(Diagnostic("P104", node_span(path, item), "endpoint without a name"))
+                continue
+            t = fields.get("type")
+            out.append(Endpoint(name.value, t.value if isinstance(t, yaml.ScalarNode) else None,
+                                node_span(path, name)))
+        else:
+            diags.append(Diagnostic("P104", node_span(path, item), "expected a name"))
+    return out
+
+
+def _param_decl(name: str, node: yaml.Node, key: yaml.Node, path: str,
+                diags: list[Diagnostic]) -> ParamDecl:
+    decl = ParamDecl(name, span=node_span(path, key), source=path)
+    if not isinstance(node, yaml.MappingNode):
+        if isinstance(node, yaml.ScalarNode):
+            decl.type = normalize_type(node.value)
+        return decl
+    for k, v in node.value:
+        if not isinstance(k, yaml.ScalarNode):
+            continue
+        val = to_python(v)
+        if k.value == "type":
+            decl.type = normalize_type(val)
+            if decl.type is None:
+                diags.append(Diagnostic("P104", node_span(path, v), f"unknown parameter type {val!r}"))
+        elif k.value in ("default", "default_value"):
+            decl.default, decl.has_default = val, True
+        elif k.value == "min":
+            decl.min = val
+        elif k.value == "max":
+            decl.max = val
+        elif k.value in ("choices", "one_of"):
+            decl.choices = list(val) if isinstance(val, list) else None
+        elif k.value == "read_only":
+            decl.read_only = bool(val)
+        elif k.value == "description":
+            decl.description = str(val)
+        elif k.value in ("validation", "validators") and isinstance(val, dict):
+            decl.validators = [(str(n)[:-2] if str(n).endswith("<>") else str(n),
+                                a if isinstance(a, list) else [a]) for n, a in val.items()]
+    return decl
+
+
+def parse_interfaces_file(path: str, text: str) -> tuple[dict[Key, NodeInterface], list[Diagnostic]]:
+    """Parse an interfaces file (``"<package>/<executable>": {publishers: [...], ...}``)."""
+    root, diags = compose(path, text)
+    out: dict[Key, NodeInterface] = {}
+    if root is None:
+        return out, diags
+    if isinstance(root, yaml.ScalarNode) and root.value == "":
+        return out, diags
+    if not isinstance(root, yaml.MappingNode):
+        diags.append(Diagnostic("P104", node_span(path, root),
+                                "an interfaces file maps \"<package>/<executable>\" to declarations"))
+        return out, diags
+    for k, v in root.value:
+        if not isinstance(k, yaml.ScalarNode) or "/" not in k.value:
+            diags.append(Diagnostic("P104", node_span(path, k),
+                                    "keys must be \"<package>/<executable>\""))
+            continue
+        pkg, _, exe = k.value.partition("/")
+        iface = NodeInterface(source=path)
+        if isinstance(v, yaml.MappingNode):
+            for fk, fv in v.value:
+                if not isinstance(fk, yaml.ScalarNode):
+                    continue
+                field = fk.value
+                if field in ENDPOINT_KINDS:
+                    setattr(iface, field, _endpoints(fv, path, diags))
+                elif field == "parameters":
+                    if isinstance(fv, yaml.MappingNode):
+                        iface.parameters = {}
+                        for pk, pv in fv.value:
+                            if isinstance(pk, yaml.ScalarNode):
+                                iface.parameters[pk.value] = _param_decl(pk.value, pv, pk, path,
+                                                                         diags)
+                    elif not (isinstance(fv, yaml.ScalarNode) and fv.value in ("", "~", "null")):
+                        diags.append(Diagnostic("P104", node_span(path, fv),
+                                                "parameters must map names to declarations"))
+                elif field == "parameters_complete":
+                    iface.parameters_complete = bool(to_python(fv))
+                else:
+                    diags.append(Diagnostic("P104", node_span(path, fk),
+                                            f"unknown field \"{field}\" in an interfaces entry"))
+        elif not (isinstance(v, yaml.ScalarNode) and v.value in ("", "~", "null")):
+            diags.append(Diagnostic("P104", node_span(path, v), "expected a mapping"))
+        out[(pkg, exe)] = iface
+    return out, diags
+
+
+# ---- bundled schemas ----------------------------------------------------------------------------
+
+def _bundled_entry(data: dict[str, Any], path: str) -> NodeInterface:
+    iface = NodeInterface(source=f"bundled {data.get('upstream', path)}")
+    for kind in ENDPOINT_KINDS:
+        if kind in data:
+            iface_list = []
+            for e in data[kind] or []:
+                if isinstance(e, str):
+                    iface_list.append(Endpoint(e))
+                elif isinstance(e, dict) and "name" in e:
+                    iface_list.append(Endpoint(str(e["name"]), e.get("type")))
+            setattr(iface, kind, iface_list)
+    if "parameters" in data:
+        iface.parameters = {}
+        for name, spec in (data["parameters"] or {}).items():
+            spec = spec or {}
+            decl = ParamDecl(str(name), normalize_type(spec.get("type")), spec.get("default"),
+                             spec.get("min"), spec.get("max"), spec.get("choices"),
+                             bool(spec.get("read_only", False)), [], spec.get("description"),
+                             None, iface.source, "default" in spec,
+                             bool(spec.get("dynamic_type", False)))
+            iface.parameters[str(name)] = decl
+    iface.parameters_complete = bool(data.get("parameters_complete", False))
+    iface.parameter_patterns = list(data.get("parameter_patterns", []) or [])
+    return iface
+
+
+def load_bundled(distro: str = "humble") -> dict[Key, NodeInterface]:
+    out: dict[Key, NodeInterface] = {}
+    d = _schemas_dir()
+    if d is None:
+        return out
+    for f in sorted(d.glob("*.yaml")) + sorted(d.glob("*.json")):
+        if f.name == "interface.schema.json":
+            continue
+        try:
+            text = f.read_text(encoding="utf-8")
+            data = json.loads(text) if f.suffix == ".json" else yaml.load(
+                text, Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
+        except (OSError, ValueError, yaml.YAMLError):
+            continue
+        if not isinstance(data, dict):
+            continue
+        distros = data.get("distros")
+        if distros and distro not in distros:
+            continue
+        pkg = data.get("package")
+        for exe, entry in (data.get("nodes") or {}).items():
+            if isinstance(entry, dict) and isinstance(pkg, str):
+                out[(pkg, str(exe))] = _bundled_entry(dict(entry, upstream=data.get("upstream")),
+                                                      str(f))
+    return out
+
+
+# ---- merging ------------------------------------------------------------------------------------
+
+def merge(layers: Iterable[NodeInterface]) -> NodeInterface | None:
+    """Merge interfaces, highest priority first."""
+    layers = [x for x in layers if x is not None]
+    if not layers:
+        return None
+    out = NodeInterface(source=" + ".join(x.source for x in layers if x.source))
+    for kind in ENDPOINT_KINDS:
+        for layer in layers:
+            v = getattr(layer, kind)
+            if v is not None and (v or layer.source.startswith("bundled") or
+                                  not layer.source.startswith("extracted")):
+                setattr(out, kind, list(v))
+                break
+    params: dict[str, ParamDecl] | None = None
+    complete = False
+    patterns: list[str] = []
+    for layer in reversed(layers):
+        if layer.parameters is not None:
+            params = dict(params or {})
+            params.update(layer.parameters)
+            complete = complete or layer.parameters_complete
+        patterns.extend(p for p in layer.parameter_patterns if p not in patterns)
+    out.parameters = params
+    out.parameters_complete = complete and params is not None
+    out.parameter_patterns = patterns
+    return out
+
+
+class InterfaceStore:
+    def __init__(self, packages: Any = None, distro: str = "humble") -> None:
+        self.packages = packages
+        self.distro = distro
+        self.declared: dict[Key, NodeInterface] = {}
+        self.bundled: dict[Key, NodeInterface] = {}
+        self.diagnostics: list[Diagnostic] = []
+        self._cache: dict[Key, NodeInterface | None] = {}
+        self._extracted: dict[Key, NodeInterface] = {}
+
+    def add_extracted(self, package: str, executable: str, files: list[tuple[str, str]]) -> None:
+        """Give the store the sources of an executable (the caller knows which files build it)."""
+        cpp = [(p, t) for p, t in files if p.endswith((".cpp", ".cc", ".cxx", ".hpp", ".h", ".hh"))]
+        py = [(p, t) for p, t in files if p.endswith(".py")]
+        layers = []
+        if cpp:
+            layers.append(extract_cpp(cpp))
+        if py:
+            layers.append(extract_py(py))
+        merged = merge(layers) if layers else None
+        if merged is not None:
+            merged.parameters_complete = False
+            self._extracted[(package, executable)] = merged
+            self._cache.pop((package, executable), None)
+
+    def _gpl(self, package: str, executable: str) -> NodeInterface | None:
+        fn = getattr(self.packages, "parameter_yaml_for", None)
+        reader = getattr(self.packages, "read_text", None)
+        if fn is None or reader is None:
+            return None
+        try:
+            paths = list(fn(package, executable) or [])
+        except Exception:  # noqa: BLE001 -- an index failure must not break linting
+            return None
+        if not paths:
+            return None
+        iface = NodeInterface(parameters={}, parameters_complete=True,
+                              source="generate_parameter_library " + ", ".join(paths))
+        for path in paths:
+            text = reader(path)
+            if text is None:
+                iface.parameters_complete = False
+                continue
+            decls, patterns, diags = parse_gpl(path, text)
+            self.diagnostics.extend(diags)
+            if diags:
+                iface.parameters_complete = False
+            iface.parameters.update(decls)  # type: ignore[union-attr]
+            iface.parameter_patterns.extend(patterns)
+        return iface
+
+    def _sources(self, package: str, executable: str) -> None:
+        if (package, executable) in self._extracted:
+            return
+        fn = getattr(self.packages, "source_files_for", None)
+        reader = getattr(self.packages, "read_text", None)
+        if fn is None or reader is None:
+            return
+        try:
+            paths = list(fn(package, executable) or [])
+        except Exception:  # noqa: BLE001
+            return
+        files = []
+        for p in paths[:500]:
+            t = reader(p)
+            if t is not None:
+                files.append((p, t))
+        if files:
+            self.add_extracted(package, executable, files)
+
+    def get(self, package: str | None, executable: str | None) -> NodeInterface | None:
+        if not package or not executable:
+            return None
+        key = (package, executable)
+        if key in self._cache:
+            return self._cache[key]
+        self._sources(package, executable)
+        layers = [self.declared.get(key), self._gpl(package, executable),
+                  self._extracted.get(key), self.bundled.get(key)]
+        result = merge([x for x in layers if x is not None])
+        self._cache[key] = result
+        return result
+
+    def known(self) -> list[Key]:
+        return sorted(set(self.declared) | set(self.bundled) | set(self._extracted))
+
+
+def build_interface_store(interface_files: list[tuple[str, str]], packages: Any,
+                          distro: str = "humble") -> tuple[InterfaceStore, list[Diagnostic]]:
+    store = InterfaceStore(packages, distro)
+    diags: list[Diagnostic] = []
+    for path, text in interface_files:
+        entries, d = parse_interfaces_file(path, text)
+        diags.extend(d)
+        for key, iface in entries.items():
+            store.declared[key] = merge([iface, store.declared[key]]) if key in store.declared \
+                else iface
+    store.bundled = load_bundled(distro)
+    store.diagnostics = diags
+    return store, diags
+
+
+__all__ = ["InterfaceStore", "build_interface_store", "parse_interfaces_file", "load_bundled",
+           "merge", "Span"]

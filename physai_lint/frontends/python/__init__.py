@@ -93,8 +93,9 @@ def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | N
             actions = (OpaqueAction("opaque@gld", Span.whole_file(path), None,
                                     "generate_launch_description does not return a LaunchDescription"),)
     try:
-        calls = tuple(call_facts(tree, spans, ev.kw_kinds))
-        names = tuple(undefined_names(tree, spans))
+        nodes = list(ast.walk(tree))
+        calls = tuple(call_facts(nodes, spans, ev.kw_kinds))
+        names = tuple(undefined_names(tree, nodes, spans, text))
     except RecursionError:
         calls, names = (), ()
     concats = tuple(sorted(ev.concats.values(), key=lambda c: (c.span.line, c.span.col, c.how)))

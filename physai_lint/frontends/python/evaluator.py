@@ -113,6 +113,7 @@ class Evaluator(symbolic.Recorder):
         self.depth = 0
         self.cond_stack: list[CondTag] = []
         self.pending: list[list[Any]] = []
+        self.frame_tags: list[int] = []
         self.modules: dict[str, Any] = {}
 
     # ---- bookkeeping ----------------------------------------------------------------------
@@ -339,6 +340,9 @@ class Evaluator(symbolic.Recorder):
                 scope.vars = envs[1 - i]
                 if self.pending:
                     self.pending[-1].append(rets[i])
+                    # the rest of the function runs only when this branch was not taken
+                    self.cond_stack.append(tags[1 - i])
+                    self.frame_tags[-1] += 1
                 return
         merged = dict(envs[0])
         for name, v in envs[1].items():
@@ -423,6 +427,12 @@ class Evaluator(symbolic.Recorder):
         for v in (left, right):
             if isinstance(v, Opaque):
                 return Opaque(v.reason, span)
+        if isinstance(op, ast.Add) and type(left) is type(right) and isinstance(left, (list, tuple)):
+            spans = (self.item_spans(left) or [span] * len(left), self.item_spans(right) or [span] * len(right))
+            joined = left + right
+            if isinstance(spans[0], list) and isinstance(spans[1], list):
+                self.register(joined, spans[0] + spans[1])
+            return joined
         sym = symbolic.binop(self, op, left, right, span)
         if sym is not None:
             return sym
@@ -643,6 +653,7 @@ class Evaluator(symbolic.Recorder):
     # ---- functions ------------------------------------------------------------------------
     def run_function(self, body: list[ast.stmt], fscope: Scope) -> Any:
         self.pending.append([])
+        self.frame_tags.append(0)
         try:
             try:
                 self.exec_block(body, fscope)
@@ -653,6 +664,9 @@ class Evaluator(symbolic.Recorder):
                 result = Opaque("the function raises an exception")
         finally:
             pend = self.pending.pop()
+            extra = self.frame_tags.pop()
+            if extra:
+                del self.cond_stack[len(self.cond_stack) - extra:]
         for p in pend:
             result = p if result is None else self.merge(p, result)
         return result

@@ -6,6 +6,7 @@ code in branches the evaluator skipped is still checked.
 from __future__ import annotations
 
 import ast
+import symtable
 from typing import Iterable
 
 from physai_lint.model.launch import CallFact, NameFact
@@ -18,9 +19,9 @@ _SCOPES = (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda, ast.
            ast.DictComp, ast.GeneratorExp)
 
 
-def _import_map(tree: ast.Module) -> dict[str, str]:
+def _import_map(nodes: list[ast.AST]) -> dict[str, str]:
     out: dict[str, str] = {}
-    for node in ast.walk(tree):
+    for node in nodes:
         if isinstance(node, ast.Import):
             for a in node.names:
                 if a.asname:
@@ -71,10 +72,10 @@ def _kind(v: ast.expr) -> str:
     return "other"
 
 
-def call_facts(tree: ast.Module, spans: SpanMaker, evaluated: dict[tuple[int, str], str]) -> list[CallFact]:
-    imports = _import_map(tree)
+def call_facts(nodes: list[ast.AST], spans: SpanMaker, evaluated: dict[tuple[int, str], str]) -> list[CallFact]:
+    imports = _import_map(nodes)
     out: list[CallFact] = []
-    for node in ast.walk(tree):
+    for node in nodes:
         if not isinstance(node, ast.Call):
             continue
         q = _qual(node.func, imports)
@@ -189,14 +190,35 @@ class _NameChecker:
         return name in self.module or name in BUILTIN_NAMES
 
 
-def undefined_names(tree: ast.Module, spans: SpanMaker) -> list[NameFact]:
-    for n in ast.walk(tree):
+def _candidates(text: str, path: str) -> set[str]:
+    """Names some scope reads without binding them (stdlib ``symtable``, fast); a superset of
+    the undefined names, refined by the scope walk below only when it is not empty."""
+    out: set[str] = set()
+    stack = [symtable.symtable(text, path, "exec")]
+    while stack:
+        t = stack.pop()
+        stack.extend(t.get_children())
+        for sym in t.get_symbols():
+            if sym.is_referenced() and not (sym.is_assigned() or sym.is_imported() or sym.is_parameter()
+                                            or sym.is_free()):
+                out.add(sym.get_name())
+    return out
+
+
+def undefined_names(tree: ast.Module, nodes: list[ast.AST], spans: SpanMaker, text: str) -> list[NameFact]:
+    for n in nodes:
         if isinstance(n, ast.ImportFrom) and any(a.name == "*" for a in n.names):
             return []
     module_bound = _bound_in(tree.body)
-    for n in ast.walk(tree):
+    for n in nodes:
         if isinstance(n, ast.Global):
             module_bound.update(n.names)
+    try:
+        cands = _candidates(text, spans.path) - module_bound - BUILTIN_NAMES
+    except (SyntaxError, ValueError, RecursionError, MemoryError):
+        cands = {"*"}
+    if not cands:
+        return []
     checker = _NameChecker(spans, module_bound)
     for stmt in tree.body:
         checker.check(stmt, [])

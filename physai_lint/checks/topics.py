@@ -42,6 +42,9 @@ def unused_remap(ctx: CheckContext) -> Iterator[Diagnostic]:
         for node in g.launch.nodes:
             if node.id not in g.known or node.active is False:
                 continue
+            iface = ctx.interfaces.get(node.package, node.executable)
+            if iface is None or str(getattr(iface, "source", "")).startswith("bundled"):
+                continue  # bundled declarations may omit optional topics: only trust declared ones
             eps = g.endpoints_of(node.id)
             if any(e.expanded is None for e in eps):
                 continue
@@ -116,6 +119,8 @@ def _dangling(ctx: CheckContext, mine: str, other: str, code: str) -> Iterator[D
                 continue
             seen.add((span, e.resolved))
             close = similar(e.resolved, others)
+            if mine == "publisher" and not close:
+                continue  # an output nobody reads is normal (sensors, diagnostics); a near miss is not
             hint = (" (did you mean " + " or ".join(f'"{c}"' for c in close) + "?)") if close else ""
             verb, missing = ("subscribes to", "nothing publishes it") if mine == "subscriber" else (
                 "publishes", "nothing subscribes to it")

@@ -97,6 +97,7 @@ class Instantiator:
     def run(self, entry: str, cli_args: dict[str, str]) -> LaunchResult:
         self.result = LaunchResult(entry=entry, arguments=dict(cli_args))
         scope = Scope(configs=dict(cli_args))
+        self.top_configs = scope.configs
         self.frame = Frame(entry, True, (entry,), passed=frozenset(cli_args))
         lf = self.loader(entry)
         if lf is None:
@@ -186,7 +187,8 @@ class Instantiator:
         elif isinstance(a, ir.Timer):
             self._timer(a, scope)
         elif isinstance(a, ir.EventHandler):
-            self.handlers.append((a, self.frame, dict(scope.locals)))
+            fr = replace(self.frame, lost=self._scope_losses(scope))
+            self.handlers.append((a, fr, dict(scope.locals)))
         elif isinstance(a, ir.OpaqueAction):
             if a.reason:
                 self.result.opaque.append((a.span, a.reason))
@@ -280,16 +282,25 @@ class Instantiator:
             except ValueError:
                 period = None
         self.result.timers.append((a.span, period, text if text is not None else "unknown"))
-        lost = []
-        ns = scope.configs.get(NS)
-        if ns:
-            lost.append(f'namespace "{ns}"')
-        for item in scope.configs.get(REMAPS) or []:
-            lost.append(f'remap "{item[0]}:={item[1]}"')
+        lost = self._scope_losses(scope)
         delay = None if period is None or self.frame.delay is None else self.frame.delay + period
         fr = replace(self.frame, deferred="timer", delay=delay, lost=tuple(lost),
                      trigger=list(self.frame.trigger))
         self.deferred.append((a.actions, dict(scope.locals), fr))
+
+    def _scope_losses(self, scope: Scope) -> tuple[str, ...]:
+        """What actions deferred from here lose: they run with the top-level configurations."""
+        if self.frame.deferred is not None:
+            return self.frame.lost
+        lost = []
+        ns = scope.configs.get(NS)
+        if ns and ns != self.top_configs.get(NS):
+            lost.append(f'namespace "{ns}"')
+        top_remaps = self.top_configs.get(REMAPS) or []
+        for item in scope.configs.get(REMAPS) or []:
+            if not any(item is t for t in top_remaps):
+                lost.append(f'remap "{item[0]}:={item[1]}"')
+        return tuple(lost)
 
     def _run_deferred(self, top: Scope) -> None:
         rounds = 0

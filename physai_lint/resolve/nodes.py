@@ -146,7 +146,7 @@ class NodeBuilder:
             namespace=namespace, fqn=fqn, active=fr.active, remaps=remaps, param_sources=params,
             span=a.span, file=fr.file, action=a, action_id=f"{fr.file}#{a.id}",
             include_chain=fr.chain[:-1], name_explicit=name_given, namespace_explicit=ns_specified,
-            arguments=args, in_timer=fr.deferred == "timer", timer_lost=fr.lost,
+            arguments=args, in_timer=fr.deferred is not None, timer_lost=fr.lost,
             spans={k: s for k, s in a.field_spans},
         )
         self._register(inst_, inst_.action_id)

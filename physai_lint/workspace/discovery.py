@@ -95,7 +95,7 @@ def _parse_gitignore(base: str, text: str) -> list[_GitRule]:
         negate = False
         if line.startswith("!"):
             negate, line = True, line[1:]
-        elif line.startswith("\\!") or line.startswith("\\#"):
+        elif line.startswith(("\\!", "\\#")):
             line = line[1:]
         dir_only = line.endswith("/")
         line = line.rstrip("/")

@@ -317,7 +317,7 @@ def read_text_file(path: str) -> str | None:
         text = data.decode("utf-8")
     except UnicodeDecodeError:
         return None
-    return text[1:] if text.startswith("\ufeff") else text
+    return text.removeprefix("\ufeff")
 
 
 def _rule_admits(rule: InstallRule, sub: str) -> bool:
@@ -463,8 +463,9 @@ def build_package_index(workspace_root: str, distro: str = "humble",
             continue
         if pkg.name in index.packages:
             other = index.packages[pkg.name]
-            index.problems.append((pkg.package_xml, f'duplicate package name "{pkg.name}" (also in '
-                                   f'{other.path}); colcon refuses to build this workspace', 1))
+            msg = (f'duplicate package name "{pkg.name}" (also in {other.path}); '
+                   "colcon refuses to build this workspace")
+            index.problems.append((pkg.package_xml, msg, 1))
             continue
         index.packages[pkg.name] = pkg
     index._by_dir = sorted(((p.path, p) for p in index.packages.values()),
@@ -504,9 +505,9 @@ def _read_package(index: PackageIndex, pkg_dir: str) -> WorkspacePackage | None:
             if rel is None:
                 continue
             for f in files:
-                if f.startswith(rel + "/") and "/" not in f[len(rel) + 1 :]:
-                    if os.access(pkg_dir + "/" + f, os.X_OK):
-                        info.executables.add(f[len(rel) + 1 :])
+                if (f.startswith(rel + "/") and "/" not in f[len(rel) + 1 :]
+                        and os.access(pkg_dir + "/" + f, os.X_OK)):
+                    info.executables.add(f[len(rel) + 1 :])
     return WorkspacePackage(
         name=name,
         path=pkg_dir,

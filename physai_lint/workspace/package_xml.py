@@ -7,7 +7,7 @@ import re
 import warnings
 from dataclasses import dataclass, field
 
-_DEP_RX = re.compile(r"<(depend|exec_depend|run_depend)\b[^>]*>\s*([^<\s]+)\s*</\1\s*>", re.S)
+_DEP_RX = re.compile(r"<(depend|exec_depend|run_depend)\b[^>]*>\s*([^<\s]+)\s*</\1\s*>", re.DOTALL)
 _NAME_RX = re.compile(r"<name>\s*([^<\s]+)\s*</name>")
 _BUILD_TYPE_RX = re.compile(r"<build_type\b[^>]*>\s*([^<\s]+)\s*</build_type>")
 _LINE_RX = re.compile(r"line (\d+)")
@@ -41,13 +41,13 @@ def parse_manifest(text: str, filename: str, distro: str) -> ManifestInfo:
 
 
 def _parse_manifest(text: str, filename: str, distro: str) -> ManifestInfo:
-    from catkin_pkg.package import parse_package_string  # deferred: the import costs ~50 ms
+    from catkin_pkg.package import parse_package_string  # type: ignore[import-untyped]  # deferred: the import costs ~50 ms
 
     lines = dependency_lines(text)
     try:
         pkg_warnings: list[str] = []
         pkg = parse_package_string(text, filename=filename, warnings=pkg_warnings)
-    except Exception as exc:  # InvalidPackage, AssertionError on unknown format, ValueError ...
+    except Exception as exc:  # noqa: BLE001 - InvalidPackage, AssertionError on unknown format, ValueError ...
         msg = " ".join(str(exc).split()) or type(exc).__name__
         line = 1
         m = _LINE_RX.search(str(exc))
@@ -64,7 +64,7 @@ def _parse_manifest(text: str, filename: str, distro: str) -> ManifestInfo:
         )
     try:
         pkg.evaluate_conditions({"ROS_VERSION": "2", "ROS_DISTRO": distro, "ROS_PYTHON_VERSION": "3"})
-    except Exception:
+    except Exception:  # noqa: BLE001, S110 - an unparsable condition keeps the dependency
         pass
     deps: dict[str, int] = {}
     for dep in list(pkg.exec_depends) + list(getattr(pkg, "run_depends", [])):
@@ -74,7 +74,7 @@ def _parse_manifest(text: str, filename: str, distro: str) -> ManifestInfo:
         deps.setdefault(dep.name, lines.get(dep.name, 1))
     try:
         build_type = pkg.get_build_type()
-    except Exception:
+    except Exception:  # noqa: BLE001 - InvalidPackage for several unconditional build types
         bt = _BUILD_TYPE_RX.search(text)
         build_type = bt.group(1) if bt else "catkin"
     return ManifestInfo(

@@ -94,9 +94,9 @@ class _Eval:
             return func.id
         if isinstance(func, ast.Attribute):
             base = func.value
-            if isinstance(base, ast.Attribute) and isinstance(base.value, ast.Name):
-                if base.value.id in self.os_aliases and base.attr == "path":
-                    return "os.path." + func.attr
+            if (isinstance(base, ast.Attribute) and isinstance(base.value, ast.Name)
+                    and base.value.id in self.os_aliases and base.attr == "path"):
+                return "os.path." + func.attr
             if isinstance(base, ast.Name):
                 if base.id in self.path_aliases:
                     return "os.path." + func.attr
@@ -110,7 +110,7 @@ class _Eval:
             parts = [self.value(a) for a in node.args]
             if not all(isinstance(p, str) for p in parts) or not parts:
                 raise _Unknown()
-            return posixpath.join(*parts)  # type: ignore[arg-type]
+            return posixpath.join(*[str(p) for p in parts])
         if q in ("glob.glob", "glob.iglob"):
             if not node.args:
                 raise _Unknown()
@@ -146,7 +146,7 @@ class _Eval:
         if isinstance(node.func, ast.Name) and node.func.id in ("list", "sorted", "tuple") and len(node.args) == 1:
             v = self.value(node.args[0])
             if isinstance(v, (list, tuple)):
-                return sorted(v) if node.func.id == "sorted" else list(v)  # type: ignore[type-var]
+                return sorted(v, key=str) if node.func.id == "sorted" else list(v)
         raise _Unknown()
 
     def listcomp(self, node: ast.ListComp) -> object:
@@ -283,11 +283,11 @@ def read_setup_py(pkg_dir: str, pkg_name: str, files: frozenset[str], text: str 
                 except (_Unknown, IndexError):
                     if f.value.id == data_files_var:
                         info.complete = False
-        elif isinstance(stmt, (ast.For, ast.While, ast.With, ast.FunctionDef, ast.If, ast.Try)):
-            # a loop or function may add data files we cannot see: only matters for that variable
-            if data_files_var and any(isinstance(n, ast.Name) and n.id == data_files_var
-                                      for n in ast.walk(stmt)):
-                info.complete = False
+        elif (isinstance(stmt, (ast.For, ast.While, ast.With, ast.FunctionDef, ast.If, ast.Try))
+              and data_files_var
+              and any(isinstance(n, ast.Name) and n.id == data_files_var for n in ast.walk(stmt))):
+            # a loop or function may add data files we cannot see
+            info.complete = False
     # generate_parameter_module(module_name, yaml_file) anywhere in the file
     for node in ast.walk(tree):
         if isinstance(node, ast.Call):
@@ -305,7 +305,7 @@ def read_setup_py(pkg_dir: str, pkg_name: str, files: frozenset[str], text: str 
         info.problems.append((path, "no setup() call found in setup.py", 1))
         return info
     line = setup_call.lineno
-    scripts: list[str] = []
+    scripts: list[tuple[str, str]] = []
     for kw in setup_call.keywords:
         if kw.arg is None:
             info.complete = info.executables_complete = False

@@ -3,10 +3,10 @@ from __future__ import annotations
 
 import time
 
+from test_python_constructs import PATH, actions, lit, parse
+
 from physai_lint.model import launch as L
 from physai_lint.model import values as V
-
-from test_python_constructs import PATH, actions, lit, parse
 
 
 def test_helper_loop_creates_namespaced_groups_with_unique_ids():

@@ -14,7 +14,8 @@ are converted to 1-based character columns in ``positions.py``.
 from __future__ import annotations
 
 import ast
-from typing import Any, Callable
+from collections.abc import Callable
+from typing import Any
 
 from physai_lint.frontends import FrontendResult
 from physai_lint.model.findings import Diagnostic
@@ -24,6 +25,7 @@ from physai_lint.model.span import Span
 from . import convert_values
 from .calls import call_user
 from .convert_actions import ActionBuilder
+from .core import Signal
 from .evaluator import Abort, Evaluator
 from .facts import call_facts, undefined_names
 from .runtime import LObj, Opaque, UserFunc
@@ -67,7 +69,7 @@ def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | N
         result = Opaque(e.reason, Span.whole_file(path))
     except RecursionError:
         result = Opaque("the file is too deeply nested to evaluate", Span.whole_file(path))
-    except Exception:  # noqa: BLE001 - stray control flow (return/break at module level)
+    except Signal:  # stray return/break/raise at module level ends the module
         pass
     gld = ev.main.scope.vars.get("generate_launch_description")
     if has_gld and result is None:

@@ -19,8 +19,8 @@ _PURE = {
 }
 
 
-def call_builtin(ev: "Evaluator", name: str, args: list[Any], kwargs: dict[str, Any], span: Span) -> Any:
-    from .calls import iterate, call_user
+def call_builtin(ev: Evaluator, name: str, args: list[Any], kwargs: dict[str, Any], span: Span) -> Any:
+    from .calls import call_user, iterate
     from .evaluator import is_concrete
 
     for a in list(args) + list(kwargs.values()):
@@ -62,7 +62,7 @@ def call_builtin(ev: "Evaluator", name: str, args: list[Any], kwargs: dict[str, 
     return Opaque(f'builtin "{name}" on values that cannot be evaluated statically', span)
 
 
-def _containers(ev: "Evaluator", name: str, args: list[Any], kwargs: dict[str, Any], span: Span,
+def _containers(ev: Evaluator, name: str, args: list[Any], kwargs: dict[str, Any], span: Span,
                 iterate: Any, call_user: Any) -> Any:
     if name == "dict":
         out: dict[Any, Any] = {}
@@ -120,7 +120,7 @@ def _containers(ev: "Evaluator", name: str, args: list[Any], kwargs: dict[str, A
     return [tuple(t) for t in zip(*seqs)]
 
 
-def str_format_join(ev: "Evaluator", s: str, name: str, args: list[Any], kwargs: dict[str, Any], span: Span) -> Any:
+def str_format_join(ev: Evaluator, s: str, name: str, args: list[Any], kwargs: dict[str, Any], span: Span) -> Any:
     from .calls import iterate
     from .evaluator import is_concrete
 

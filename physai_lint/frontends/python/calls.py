@@ -7,7 +7,6 @@ from __future__ import annotations
 
 import ast
 import json
-import os
 import posixpath
 from typing import TYPE_CHECKING, Any
 
@@ -18,25 +17,31 @@ from physai_lint.model.values import FindPackage, LaunchConfig, Text
 
 from . import api, builtin_calls, symbolic
 from .convert_values import to_value
-from .runtime import (BoundMethod, ContextSym, FileHandle, KPath, LaunchConfigsSym, LObj, ModuleValue,
-                      Opaque, Ref, SymStr, UserFunc)
+from .runtime import (
+    BoundMethod,
+    ContextSym,
+    FileHandle,
+    KPath,
+    LaunchConfigsSym,
+    LObj,
+    ModuleValue,
+    Opaque,
+    Ref,
+    SymStr,
+    UserFunc,
+)
 
 if TYPE_CHECKING:
     from .evaluator import Evaluator, Scope
 
 _STR_METHODS = frozenset(
-    "capitalize casefold center count endswith expandtabs find index isalnum isalpha isascii isdecimal "
-    "isdigit isidentifier islower isnumeric isspace istitle isupper ljust lower lstrip partition "
-    "removeprefix removesuffix replace rfind rindex rjust rpartition rsplit rstrip split splitlines "
-    "startswith strip swapcase title upper zfill".split())
-_LIST_METHODS = frozenset("append extend insert pop index count copy remove reverse clear".split())
-_DICT_METHODS = frozenset("items keys values get update copy pop setdefault".split())
-_KNOWN_MODULES = frozenset("os os.path sys json yaml pathlib math re typing functools itertools "
-                           "ament_index_python tempfile xacro subprocess shutil glob collections "
-                           "launch_ros launch launch_xml launch_yaml ament_index_python.packages".split())
+    ["capitalize", "casefold", "center", "count", "endswith", "expandtabs", "find", "index", "isalnum", "isalpha", "isascii", "isdecimal", "isdigit", "isidentifier", "islower", "isnumeric", "isspace", "istitle", "isupper", "ljust", "lower", "lstrip", "partition", "removeprefix", "removesuffix", "replace", "rfind", "rindex", "rjust", "rpartition", "rsplit", "rstrip", "split", "splitlines", "startswith", "strip", "swapcase", "title", "upper", "zfill"])
+_LIST_METHODS = frozenset(["append", "extend", "insert", "pop", "index", "count", "copy", "remove", "reverse", "clear"])
+_DICT_METHODS = frozenset(["items", "keys", "values", "get", "update", "copy", "pop", "setdefault"])
+_KNOWN_MODULES = frozenset(["os", "os.path", "sys", "json", "yaml", "pathlib", "math", "re", "typing", "functools", "itertools", "ament_index_python", "tempfile", "xacro", "subprocess", "shutil", "glob", "collections", "launch_ros", "launch", "launch_xml", "launch_yaml", "ament_index_python.packages"])
 
 
-def iterate(ev: "Evaluator", v: Any) -> list[Any] | None:
+def iterate(ev: Evaluator, v: Any) -> list[Any] | None:
     """The items of a known iterable, else None."""
     if isinstance(v, dict):
         return list(v.keys())
@@ -50,7 +55,7 @@ def iterate(ev: "Evaluator", v: Any) -> list[Any] | None:
     return None
 
 
-def get_attr(ev: "Evaluator", obj: Any, attr: str, span: Span) -> Any:
+def get_attr(ev: Evaluator, obj: Any, attr: str, span: Span) -> Any:
     if isinstance(obj, Opaque):
         return Opaque(obj.reason, span)
     if isinstance(obj, Ref):
@@ -70,13 +75,13 @@ def get_attr(ev: "Evaluator", obj: Any, attr: str, span: Span) -> Any:
     return Opaque(f'attribute "{attr}" cannot be evaluated statically', span)
 
 
-def subscript(ev: "Evaluator", obj: Any, key: Any, span: Span) -> Any:
+def subscript(ev: Evaluator, obj: Any, key: Any, span: Span) -> Any:
     if isinstance(obj, LaunchConfigsSym) and isinstance(key, str):
         return SymStr((LaunchConfig((Text(str(key), span),), None, span),))
     if isinstance(obj, (dict, list, tuple, str)) and not isinstance(key, Opaque):
         try:
             result = obj[key]
-        except Exception:
+        except Exception:  # noqa: BLE001 - e.g. a missing key: unknown, not a crash
             return Opaque("subscript fails statically", span)
         if isinstance(obj, (list, tuple)) and isinstance(key, slice):
             return result
@@ -85,7 +90,7 @@ def subscript(ev: "Evaluator", obj: Any, key: Any, span: Span) -> Any:
     return Opaque(reason, span)
 
 
-def import_module(ev: "Evaluator", name: str, level: int, scope: "Scope") -> Any:
+def import_module(ev: Evaluator, name: str, level: int, scope: Scope) -> Any:
     top = name.split(".")[0]
     if level == 0 and (top in api.ROOTS or name in _KNOWN_MODULES or top in _KNOWN_MODULES):
         return Ref(name)
@@ -93,10 +98,10 @@ def import_module(ev: "Evaluator", name: str, level: int, scope: "Scope") -> Any
     return loaded if loaded is not None else Ref(name)
 
 
-def _load_sibling(ev: "Evaluator", name: str, level: int, scope: "Scope") -> ModuleValue | None:
+def _load_sibling(ev: Evaluator, name: str, level: int, scope: Scope) -> ModuleValue | None:
     if ev.read_file is None or not name:
         return None
-    from .evaluator import ModuleCtx
+    from .core import Abort, ModuleCtx, Signal
     from .positions import SpanMaker
 
     base = posixpath.dirname((scope.module or ev.main).path)
@@ -119,7 +124,7 @@ def _load_sibling(ev: "Evaluator", name: str, level: int, scope: "Scope") -> Mod
         ctx = ModuleCtx(cand, SpanMaker(cand, text), posixpath.basename(cand) + ":")
         try:
             ev.exec_block(tree.body, ctx.scope)
-        except Exception:  # noqa: BLE001 - a helper module we cannot follow is just unknown
+        except (Signal, Abort, RecursionError):  # a helper module we cannot follow is partly unknown
             pass
         mod = ModuleValue(name, ctx.scope.vars)
         ev.modules[cand] = mod
@@ -127,8 +132,8 @@ def _load_sibling(ev: "Evaluator", name: str, level: int, scope: "Scope") -> Mod
     return None
 
 
-def call(ev: "Evaluator", func: Any, args: list[Any], kwargs: dict[str, Any], node: ast.Call,
-         scope: "Scope", arg_spans: list[Span], kw_spans: dict[str, Span]) -> Any:
+def call(ev: Evaluator, func: Any, args: list[Any], kwargs: dict[str, Any], node: ast.Call,
+         scope: Scope, arg_spans: list[Span], kw_spans: dict[str, Span]) -> Any:
     span = ev.span(node, scope)
     if isinstance(func, UserFunc):
         return call_user(ev, func, args, kwargs, span)
@@ -144,7 +149,7 @@ def call(ev: "Evaluator", func: Any, args: list[Any], kwargs: dict[str, Any], no
     return Opaque("call of a value that cannot be evaluated statically", span)
 
 
-def call_user(ev: "Evaluator", f: UserFunc, args: list[Any], kwargs: dict[str, Any], span: Span) -> Any:
+def call_user(ev: Evaluator, f: UserFunc, args: list[Any], kwargs: dict[str, Any], span: Span) -> Any:
     from .evaluator import MAX_DEPTH, Abort, Scope
 
     if ev.depth >= MAX_DEPTH:
@@ -181,7 +186,7 @@ def call_user(ev: "Evaluator", f: UserFunc, args: list[Any], kwargs: dict[str, A
         ev.depth -= 1
 
 
-def call_ref(ev: "Evaluator", qual: str, args: list[Any], kwargs: dict[str, Any], span: Span) -> Any:
+def call_ref(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any], span: Span) -> Any:
     if qual.startswith("builtins."):
         return builtin_calls.call_builtin(ev, qual[9:], args, kwargs, span)
     if qual in ("ament_index_python.packages.get_package_share_directory", "ament_index_python.packages.get_package_prefix"):
@@ -212,7 +217,7 @@ def call_ref(ev: "Evaluator", qual: str, args: list[Any], kwargs: dict[str, Any]
     return Opaque(f'call of "{qual}" cannot be evaluated statically', span)
 
 
-def read_text(ev: "Evaluator", path: Any, span: Span) -> Any:
+def read_text(ev: Evaluator, path: Any, span: Span) -> Any:
     if isinstance(path, KPath):
         path = path.path
     if not isinstance(path, str) or not path.startswith("/") or ev.read_file is None:
@@ -226,7 +231,7 @@ def read_text(ev: "Evaluator", path: Any, span: Span) -> Any:
     return text
 
 
-def load_data(ev: "Evaluator", qual: str, src: Any, span: Span) -> Any:
+def load_data(ev: Evaluator, qual: str, src: Any, span: Span) -> Any:
     if isinstance(src, FileHandle):
         src = read_text(ev, src.path, span)
     if isinstance(src, Opaque) or not isinstance(src, str):
@@ -239,7 +244,7 @@ def load_data(ev: "Evaluator", qual: str, src: Any, span: Span) -> Any:
         return Opaque("the file could not be parsed", span)
 
 
-def call_method(ev: "Evaluator", obj: Any, name: str, args: list[Any], kwargs: dict[str, Any], span: Span) -> Any:
+def call_method(ev: Evaluator, obj: Any, name: str, args: list[Any], kwargs: dict[str, Any], span: Span) -> Any:
     if isinstance(obj, LObj):
         if name in ("add_action", "add_entity") and "entities" in obj.extra and args:
             obj.extra["entities"].append(args[0])
@@ -301,8 +306,8 @@ def _safe(fn: Any, args: list[Any], kwargs: dict[str, Any], span: Span) -> Any:
         return Opaque("operation fails statically", span)
 
 
-def make_lobj(ev: "Evaluator", qual: str, args: list[Any], kwargs: dict[str, Any], node: ast.Call,
-              scope: "Scope", arg_spans: list[Span], kw_spans: dict[str, Span]) -> Any:
+def make_lobj(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any], node: ast.Call,
+              scope: Scope, arg_spans: list[Span], kw_spans: dict[str, Span]) -> Any:
     mod = scope.module or ev.main
     span = mod.spans.of(node)
     site = (mod.prefix, span.line, span.col)

@@ -32,7 +32,7 @@ _ENV_OPS = {"SetEnvironmentVariable": "set", "UnsetEnvironmentVariable": "unset"
 
 
 class ActionBuilder:
-    def __init__(self, ev: "Evaluator") -> None:
+    def __init__(self, ev: Evaluator) -> None:
         self.ev = ev
         self.applied: list[CondTag] = []
         self.opaque_ids: dict[str, int] = {}

@@ -3,9 +3,16 @@ from __future__ import annotations
 
 from typing import Any
 
-from physai_lint.model.launch import Condition, ParamDict, ParamEntry, ParamFile, ParamsUnknown, ParamSource
-from physai_lint.model.span import Span
 from physai_lint.model import values as V
+from physai_lint.model.launch import (
+    Condition,
+    ParamDict,
+    ParamEntry,
+    ParamFile,
+    ParamSource,
+    ParamsUnknown,
+)
+from physai_lint.model.span import Span
 from physai_lint.model.values import PList, PLit, PSubst, PUnknown, PValue, Value
 
 from . import api
@@ -37,7 +44,7 @@ def to_value(v: Any, span: Span | None) -> Value:
         return ()
     if isinstance(v, str):
         return (V.Text(str(v), v.span if isinstance(v, SStr) else span),)
-    if isinstance(v, bool) or isinstance(v, (int, float)):
+    if isinstance(v, (bool, int, float)):
         return (V.Text(str(v), span),)
     if isinstance(v, SymStr):
         return v.value
@@ -209,9 +216,7 @@ def to_params(v: Any, span: Span) -> tuple[ParamSource, ...]:
         elif isinstance(item, LObj) and item.qual.endswith(".ParameterFile"):
             allow = item.arg(1, "allow_substs", False)
             out.append(ParamFile(to_value(item.arg(0, "param_file"), item.arg_span(0, "param_file")), ispan, allow is True))
-        elif isinstance(item, (str, SymStr, KPath)) or (isinstance(item, LObj) and api.is_substitution(item.qual)):
-            out.append(ParamFile(to_value(item, ispan), ispan))
-        elif isinstance(item, list) and all(isinstance(x, (str, SymStr)) or (isinstance(x, LObj) and api.is_substitution(x.qual)) for x in item):
+        elif isinstance(item, (str, SymStr, KPath)) or (isinstance(item, LObj) and api.is_substitution(item.qual)) or isinstance(item, list) and all(isinstance(x, (str, SymStr)) or (isinstance(x, LObj) and api.is_substitution(x.qual)) for x in item):
             out.append(ParamFile(to_value(item, ispan), ispan))
         else:
             reason = item.reason if isinstance(item, Opaque) else f"parameter item of type {type_name(item)}"

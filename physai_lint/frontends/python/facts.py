@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import ast
 import symtable
-from typing import Iterable
+from collections.abc import Iterable
 
 from physai_lint.model.launch import CallFact, NameFact
 
@@ -114,9 +114,7 @@ def _bound_in(nodes: Iterable[ast.AST]) -> set[str]:
         elif isinstance(n, (ast.Import, ast.ImportFrom)):
             for a in n.names:
                 out.add(a.asname or a.name.split(".")[0])
-        elif isinstance(n, ast.ExceptHandler) and n.name:
-            out.add(n.name)
-        elif isinstance(n, (ast.MatchAs, ast.MatchStar)) and n.name:
+        elif isinstance(n, ast.ExceptHandler) and n.name or isinstance(n, (ast.MatchAs, ast.MatchStar)) and n.name:
             out.add(n.name)
         elif isinstance(n, ast.MatchMapping) and n.rest:
             out.add(n.rest)

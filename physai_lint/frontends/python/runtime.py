@@ -19,7 +19,7 @@ class SStr(str):
 
     span: Span | None
 
-    def __new__(cls, s: str, span: Span | None) -> "SStr":
+    def __new__(cls, s: str, span: Span | None) -> SStr:  # noqa: PYI034
         obj = super().__new__(cls, s)
         obj.span = span
         return obj
@@ -67,7 +67,7 @@ class LObj:
     span: Span
     arg_spans: list[Span]
     kw_spans: dict[str, Span]
-    tags: tuple["CondTag", ...] = ()
+    tags: tuple[CondTag, ...] = ()
     extra: dict[str, Any] = field(default_factory=dict)
     index: int = 0  # n-th object created at this call site
 

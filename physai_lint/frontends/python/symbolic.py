@@ -161,7 +161,7 @@ def format_value(rec: Recorder, x: Any, conversion: int, spec: Any, span: Span) 
         if isinstance(x, str) and not spec:
             return str(x)
         return format(x, spec)
-    except Exception:
+    except Exception:  # noqa: BLE001
         return Opaque("f-string formatting fails", span)
 
 

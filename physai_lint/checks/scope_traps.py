@@ -1,0 +1,115 @@
+"""Scope traps of real launch (SEMANTICS §1): L109 invalid-condition-value, L110 timer-loses-scope,
+L111 scoped-group-leak, L112 dirname-after-include, L113 set-use-sim-time-no-effect."""
+from __future__ import annotations
+
+from typing import Iterator
+
+from physai_lint.checks._util import all_nodes, where
+from physai_lint.checks.base import CheckContext, rule
+from physai_lint.model.findings import Diagnostic
+from physai_lint.model.launch import NodeAction
+from physai_lint.model.values import literal_of
+
+
+@rule("L109", "invalid-condition-value")
+def invalid_condition_value(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for launch in ctx.launches:
+        for span, value in launch.invalid_conditions:
+            if (span, value) in seen:
+                continue
+            seen.add((span, value))
+            yield Diagnostic(
+                "L109", span,
+                f'condition value "{value}" is not one of "true", "false", "1", "0" (any case); '
+                f'launch fails with InvalidConditionExpressionError',
+                help="pass a boolean string (true/false/1/0), or compare explicitly with "
+                     "LaunchConfigurationEquals / $(equals ...) / PythonExpression",
+                key=value)
+
+
+def _namespace_absolute(node: object) -> bool:
+    action = getattr(node, "action", None)
+    if not isinstance(action, NodeAction) or action.namespace is None:
+        return False
+    ns = literal_of(action.namespace)
+    return ns is not None and ns.startswith("/")
+
+
+def _who(node: object) -> str:
+    fqn = getattr(node, "fqn", None)
+    return f'node "{fqn}"' if fqn else where(node)  # type: ignore[arg-type]
+
+
+@rule("L110", "timer-loses-scope")
+def timer_loses_scope(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for _, node in all_nodes(ctx, include_inactive=False):
+        if not node.in_timer or not node.timer_lost:
+            continue
+        lost = [item for item in node.timer_lost
+                if not (item.startswith("namespace ") and _namespace_absolute(node))]
+        if not lost or node.span in seen:
+            continue
+        seen.add(node.span)
+        what = " and ".join(lost)
+        yield Diagnostic(
+            "L110", node.span,
+            f"{_who(node)} is started by a TimerAction/event handler and loses {what} of its "
+            "enclosing group: deferred actions run after the group's scope has been popped",
+            help="put PushRosNamespace/SetRemap inside the timer's (or handler's) actions, e.g. "
+                 "TimerAction(actions=[GroupAction([PushRosNamespace(...), Node(...)])]), "
+                 "or give the node its own namespace=/remappings=",
+            key=f"{node.package}/{node.executable}:{what}")
+
+
+@rule("L111", "scoped-group-leak")
+def scoped_group_leak(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for launch in ctx.launches:
+        for span, what in launch.scope_leaks:
+            if span in seen:
+                continue
+            seen.add(span)
+            yield Diagnostic(
+                "L111", span,
+                f"{what} inside a scoped group also applies after the group: it is appended to a "
+                "list created outside the group, which the group's scope does not restore",
+                help="give the nodes inside the group remappings=/parameters= directly, or move the "
+                     "outer SetRemap/SetParameter (which created the shared list) after the group",
+                key=what)
+
+
+@rule("L112", "dirname-after-include")
+def dirname_after_include(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for launch in ctx.launches:
+        for span, got, own in launch.dirname_traps:
+            if span in seen or got == own:
+                continue
+            seen.add(span)
+            yield Diagnostic(
+                "L112", span,
+                f'ThisLaunchFileDir()/$(dirname) evaluates to "{got}" here, not this file\'s '
+                f'directory "{own}": an earlier include set it and never restored it',
+                help="use FindPackageShare('<pkg>') / $(find-pkg-share <pkg>) to build the path, or "
+                     "evaluate the directory before the include",
+                key=got)
+
+
+@rule("L113", "set-use-sim-time-no-effect")
+def set_use_sim_time_no_effect(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for launch in ctx.launches:
+        for span in launch.use_sim_time_actions:
+            if span in seen:
+                continue
+            seen.add(span)
+            yield Diagnostic(
+                "L113", span,
+                "SetUseSimTime / <set_use_sim_time> does not set the use_sim_time parameter of the "
+                "nodes launched after it",
+                help="use SetParameter(name='use_sim_time', value=True) / "
+                     '<set_parameter name="use_sim_time" value="true"/>, or pass use_sim_time in '
+                     "each node's parameters",
+                key="use_sim_time")

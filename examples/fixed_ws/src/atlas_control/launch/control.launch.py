@@ -1,7 +1,6 @@
 """ros2_control for the base and the arm, the controller spawners in order, the safety stage."""
 from launch import LaunchDescription
-from launch.actions import DeclareLaunchArgument, RegisterEventHandler
-from launch.event_handlers import OnProcessExit
+from launch.actions import DeclareLaunchArgument
 from launch.substitutions import (Command, FindExecutable, LaunchConfiguration,
                                   PathJoinSubstitution)
 from launch_ros.actions import Node
@@ -63,14 +62,12 @@ def generate_launch_description():
         DeclareLaunchArgument('use_sim_time', default_value='false'),
         DeclareLaunchArgument('robot_name', default_value='atlas'),
         control_node,
+        # Every spawner and the safety controller start directly: event handlers and timers run
+        # after the fleet's PushRosNamespace group has been popped, so anything they start would
+        # lose the robot's namespace (and talk to /controller_manager). A spawner waits for its
+        # controller manager by itself.
         joint_state_broadcaster_spawner,
-        # The base controller needs joint states first; the arm follows the base.
-        RegisterEventHandler(OnProcessExit(
-            target_action=joint_state_broadcaster_spawner,
-            on_exit=[diff_drive_spawner],
-        )),
-        RegisterEventHandler(OnProcessExit(
-            target_action=diff_drive_spawner,
-            on_exit=[arm_controller_spawner, safety_controller],
-        )),
+        diff_drive_spawner,
+        arm_controller_spawner,
+        safety_controller,
     ])

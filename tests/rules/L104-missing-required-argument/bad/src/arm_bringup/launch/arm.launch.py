@@ -1,0 +1,14 @@
+from launch import LaunchDescription
+from launch.actions import IncludeLaunchDescription
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+from launch.substitutions import PathJoinSubstitution
+from launch_ros.substitutions import FindPackageShare
+
+
+def generate_launch_description():
+    arm = IncludeLaunchDescription(
+        PythonLaunchDescriptionSource(
+            PathJoinSubstitution([FindPackageShare('arm_bringup'), 'launch', 'state.launch.py'])),
+        launch_arguments={'use_sim_time': 'false'}.items(),
+    )
+    return LaunchDescription([arm])

@@ -1,0 +1,13 @@
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(
+            package='gripper_driver',
+            executable='gripper_nod',
+            name='gripper',
+            parameters=[{'device': '/dev/ttyACM0'}],
+        ),
+    ])

@@ -1,0 +1,44 @@
+"""``physai-lint plan``: the startup plan of one entry launch file, rendered."""
+from __future__ import annotations
+
+import os
+from dataclasses import replace
+from typing import Any
+
+from physai_lint.engine import CheckOptions, build_project
+
+
+def compute_plan(opts: CheckOptions, entry: str, cwd: str | None = None) -> tuple[Any, str]:
+    """(Plan, cwd) for ``entry`` (a launch file path, relative to ``cwd``)."""
+    from physai_lint.errors import UsageError
+    from physai_lint.graph.plan import build_plan
+    from physai_lint.graph.system import build_graph
+    from physai_lint.params.effective import effective_parameters
+
+    cwd = (cwd or os.getcwd()).replace(os.sep, "/")
+    target = os.path.normpath(os.path.join(cwd, entry)).replace(os.sep, "/")
+    project = build_project(replace(opts, paths=[entry]), cwd)
+    launch = next((l for l in project.launches if l.entry == target), None)
+    if launch is None:
+        if not project.launches:
+            raise UsageError(f'"{entry}" is not a launch file')
+        launch = project.launches[0]
+    graph = build_graph(launch, project.interfaces)
+    cache: dict[int, Any] = {}
+
+    def params(node: Any) -> dict[str, Any]:
+        if id(node) not in cache:
+            cache[id(node)] = effective_parameters(node.fqn, node.param_sources, project.param_files,
+                                                   composable=node.kind == "composable_node",
+                                                   distro=opts.distro)
+        return cache[id(node)]  # type: ignore[no-any-return]
+
+    return build_plan(launch, graph, params), project.cwd
+
+
+def plan(opts: CheckOptions, entry: str, fmt: str, cwd: str | None = None) -> str:
+    """Render the startup plan of ``entry`` as ``fmt`` (text, json, dot, mermaid)."""
+    from physai_lint.report.plan_render import render_plan
+
+    p, root = compute_plan(opts, entry, cwd)
+    return render_plan(p, fmt, root)

@@ -1,0 +1,326 @@
+"""The startup plan of one resolved launch: who starts when, waiting for whom, and why.
+
+Vertices are the active (not ``False``) nodes, processes and components of a ``LaunchResult``.
+
+Hard edges (launch enforces them, or the system cannot come up without them):
+
+- ``LaunchResult.edges``: event handlers (``OnProcessStart``/``OnProcessExit``/
+  ``OnExecutionComplete``/``OnStateTransition``: the handler's actions after the target) and
+  containers before their components;
+- lifecycle managers after the nodes they manage (``node_names`` expanded against the manager's
+  namespace), and ``node_names[i]`` before ``node_names[i + 1]`` ("lifecycle order": the manager
+  configures and activates them in that order).
+
+Soft edges: a subscriber after the publishers of the topics it subscribes to (from the
+``SystemGraph``), added only when they do not close a cycle.
+
+Stages are the topological generations of the hard + soft DAG, hard cycles condensed into one
+vertex (so a cyclic plan still has stages). ``cycles`` lists the simple cycles of the hard edges
+(bounded); a cycle is ``deadlock`` when none of its members can ever start: every member only
+runs from event handlers whose targets only run from handlers of the cycle (the resolver walks a
+handler's actions as if the event came, so it records such actions as started). A cycle with a
+member that does start is launch executing one action twice, not a deadlock.
+
+``critical_path``: the chain of hard edges with the largest total timer delay
+(``LaunchResult.delays``, relative to the event that started the timer).
+"""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any, Callable
+
+if TYPE_CHECKING:
+    from physai_lint.graph.system import SystemGraph
+    from physai_lint.model.span import Span
+    from physai_lint.resolve.model import LaunchResult, NodeInstance
+
+MAX_CYCLES = 50
+MANAGERS = {("nav2_lifecycle_manager", "lifecycle_manager")}
+HANDLER_REASONS = ("on_process_start", "on_process_exit", "on_execution_complete",
+                   "on_state_transition")
+IGNORED_TOPICS = ("/rosout", "/parameter_events")
+
+
+@dataclass(frozen=True)
+class PlanVertex:
+    id: str
+    label: str  # unique within the plan: fqn, else executable (+ first argument / line)
+    fqn: str | None
+    kind: str
+    package: str | None
+    executable: str | None
+    file: str
+    line: int
+    active: bool | None
+    delay: float | None  # timer delay after its trigger (0 when none); None when unknown
+    stage: int = 0  # 1-based
+
+
+@dataclass(frozen=True)
+class PlanEdge:
+    before: str
+    after: str
+    reason: str  # "on_process_start", "on_process_exit", ..., "container", "lifecycle manager",
+    #              "lifecycle order", "topic /x"
+    soft: bool
+    delay: float | None = None
+    span: "Span | None" = None
+
+
+@dataclass(frozen=True)
+class PlanCycle:
+    nodes: tuple[str, ...]  # vertex ids in cycle order, first not repeated
+    edges: tuple[PlanEdge, ...]  # nodes[i] -> nodes[i + 1], last back to nodes[0]
+    deadlock: bool  # no member can ever start
+
+    def text(self, labels: dict[str, str]) -> str:
+        return " -> ".join(labels.get(n, n) for n in (*self.nodes, self.nodes[0]))
+
+
+@dataclass
+class Plan:
+    entry: str
+    vertices: dict[str, PlanVertex] = field(default_factory=dict)
+    stages: list[list[str]] = field(default_factory=list)
+    edges: list[PlanEdge] = field(default_factory=list)
+    cycles: list[PlanCycle] = field(default_factory=list)
+    cycles_truncated: bool = False
+    critical_path: list[str] = field(default_factory=list)
+    critical_delay: float = 0.0
+    never_started: list[tuple["Span", str]] = field(default_factory=list)
+    skipped_soft: int = 0  # soft edges left out because they would close a cycle
+
+    @property
+    def labels(self) -> dict[str, str]:
+        return {v.id: v.label for v in self.vertices.values()}
+
+    def waits_for(self, vid: str) -> list[PlanEdge]:
+        return [e for e in self.edges if e.after == vid]
+
+
+def _natural(s: str) -> tuple[Any, ...]:
+    return tuple(int(p) if p.isdigit() else p for p in re.split(r"(\d+)", s))
+
+
+def vertex_key(v: PlanVertex) -> tuple[Any, ...]:
+    return (v.fqn is None, _natural(v.fqn or v.label), _natural(v.id))
+
+
+def _labels(nodes: list["NodeInstance"]) -> dict[str, str]:
+    base = {n.id: n.fqn or n.executable or ("process" if n.kind == "process" else "node") for n in nodes}
+    counts: dict[str, int] = {}
+    for lbl in base.values():
+        counts[lbl] = counts.get(lbl, 0) + 1
+    out = {}
+    for n in nodes:
+        lbl = base[n.id]
+        if counts[lbl] > 1:
+            arg = next((a for a in n.arguments if a and not a.startswith("-")), None)
+            lbl = f"{lbl} [{arg}]" if arg else f"{lbl} (line {n.span.line})"
+        out[n.id] = lbl
+    seen: dict[str, int] = {}
+    for n in nodes:  # still ambiguous (same arguments): make unique by id
+        seen[out[n.id]] = seen.get(out[n.id], 0) + 1
+    for n in nodes:
+        if seen[out[n.id]] > 1:
+            out[n.id] = f"{out[n.id]} #{n.id}"
+    return out
+
+
+def _param_value(params: dict[str, Any], name: str) -> Any:
+    p = params.get(name)
+    if p is None:
+        return None
+    if getattr(p, "certain", True) is False:
+        return None
+    return getattr(p, "value", p)
+
+
+def _lifecycle_edges(nodes: list["NodeInstance"], effective_params: Callable[["NodeInstance"], dict]
+                     ) -> list[PlanEdge]:
+    from physai_lint.resolve.names import expand_topic_name
+
+    by_fqn: dict[str, list[str]] = {}
+    for n in nodes:
+        if n.fqn:
+            by_fqn.setdefault(n.fqn, []).append(n.id)
+    out: list[PlanEdge] = []
+    for mgr in nodes:
+        if (mgr.package, mgr.executable) not in MANAGERS:
+            continue
+        try:
+            names = _param_value(effective_params(mgr), "node_names")
+        except Exception:  # unknown parameters: no lifecycle edges
+            names = None
+        if not isinstance(names, list):
+            continue
+        managed: list[list[str]] = []
+        for name in names:
+            target = expand_topic_name(str(name), mgr.name, mgr.namespace)
+            ids = by_fqn.get(target or "", [])
+            managed.append(ids)
+            for mid in ids:
+                if mid != mgr.id:
+                    out.append(PlanEdge(mid, mgr.id, "lifecycle manager", False, None, mgr.span))
+        for prev, nxt in zip(managed, managed[1:]):
+            for a in prev:
+                for b in nxt:
+                    if a != b:
+                        out.append(PlanEdge(a, b, "lifecycle order", False, None, mgr.span))
+    return out
+
+
+def _topic_edges(graph: "SystemGraph | None", ids: set[str]) -> list[PlanEdge]:
+    if graph is None:
+        return []
+    pubs: dict[str, set[str]] = {}
+    subs: dict[str, set[str]] = {}
+    for e in graph.endpoints:
+        if e.resolved is None or e.resolved in IGNORED_TOPICS or e.node not in ids:
+            continue
+        if e.kind == "publisher":
+            pubs.setdefault(e.resolved, set()).add(e.node)
+        elif e.kind == "subscriber":
+            subs.setdefault(e.resolved, set()).add(e.node)
+    out = []
+    for topic in sorted(subs):
+        for p in sorted(pubs.get(topic, ()), key=_natural):
+            for s in sorted(subs[topic], key=_natural):
+                if p != s:
+                    out.append(PlanEdge(p, s, f"topic {topic}", True))
+    return out
+
+
+def _startable(vertices: set[str], hard: list[PlanEdge], active: dict[str, bool | None]) -> set[str]:
+    """Vertices that can start: every handler trigger (edges grouped by handler span) has a
+    startable target instance (OR within a trigger, AND across nested triggers)."""
+    groups: dict[str, dict[Any, set[str]]] = {v: {} for v in vertices}
+    for e in hard:
+        if e.reason in HANDLER_REASONS and e.after in groups:
+            groups[e.after].setdefault((e.reason, e.span), set()).add(e.before)
+    ok: set[str] = set()
+    changed = True
+    while changed:
+        changed = False
+        for v in vertices:
+            if v in ok or active.get(v) is False:
+                continue
+            if all(befores & ok for befores in groups[v].values()):
+                ok.add(v)
+                changed = True
+    return ok
+
+
+def build_plan(launch: "LaunchResult", graph: "SystemGraph | None",
+               effective_params: Callable[["NodeInstance"], dict]) -> Plan:
+    import networkx as nx
+
+    nodes = [n for n in launch.nodes if n.active is not False]
+    labels = _labels(nodes)
+    plan = Plan(launch.entry, never_started=list(launch.never_started))
+    for n in nodes:
+        plan.vertices[n.id] = PlanVertex(
+            n.id, labels[n.id], n.fqn, n.kind, n.package, n.executable, n.file, n.span.line,
+            n.active, launch.delays.get(n.id, 0.0) if n.id in launch.delays else 0.0)
+    ids = set(plan.vertices)
+
+    hard: list[PlanEdge] = []
+    seen: set[tuple[str, str, str]] = set()
+    for e in launch.edges:
+        if e.before in ids and e.after in ids and not e.soft and (e.before, e.after, e.reason) not in seen:
+            seen.add((e.before, e.after, e.reason))
+            hard.append(PlanEdge(e.before, e.after, e.reason, False, e.delay, e.span))
+    for e in _lifecycle_edges(nodes, effective_params):
+        if (e.before, e.after, e.reason) not in seen and not any(
+                (e.before, e.after) == (h.before, h.after) for h in hard):
+            seen.add((e.before, e.after, e.reason))
+            hard.append(e)
+
+    H = nx.DiGraph()
+    H.add_nodes_from(sorted(ids, key=_natural))
+    first_edge: dict[tuple[str, str], PlanEdge] = {}
+    for e in hard:
+        H.add_edge(e.before, e.after)
+        first_edge.setdefault((e.before, e.after), e)
+
+    # ---- cycles among hard edges ------------------------------------------------------------------
+    startable = _startable(ids, hard, {n.id: n.active for n in nodes})
+    found: list[PlanCycle] = []
+    for cyc in nx.simple_cycles(H):
+        if len(found) >= MAX_CYCLES:
+            plan.cycles_truncated = True
+            break
+        # rotate so that it starts at its smallest member: deterministic text
+        i = min(range(len(cyc)), key=lambda k: vertex_key(plan.vertices[cyc[k]]))
+        cyc = cyc[i:] + cyc[:i]
+        edges = tuple(first_edge[(cyc[k], cyc[(k + 1) % len(cyc)])] for k in range(len(cyc)))
+        found.append(PlanCycle(tuple(cyc), edges, deadlock=not (set(cyc) & startable)))
+    plan.cycles = sorted(found, key=lambda c: [vertex_key(plan.vertices[n]) for n in c.nodes])
+
+    # ---- condensed DAG, soft edges, stages --------------------------------------------------------
+    cond = nx.condensation(H)
+    member = cond.graph["mapping"]
+    D = nx.DiGraph(cond.edges())
+    D.add_nodes_from(cond.nodes())
+    soft: list[PlanEdge] = []
+    for e in _topic_edges(graph, ids):
+        cu, cv = member[e.before], member[e.after]
+        if cu == cv or D.has_edge(cu, cv):
+            if cu != cv:
+                soft.append(e)  # already ordered by a hard edge: show it, costs nothing
+            continue
+        if nx.has_path(D, cv, cu):
+            plan.skipped_soft += 1
+            continue
+        D.add_edge(cu, cv)
+        soft.append(e)
+    # drop soft edges duplicating a hard edge between the same two vertices
+    hard_pairs = {(e.before, e.after) for e in hard}
+    soft = [e for e in soft if (e.before, e.after) not in hard_pairs]
+
+    for gen in nx.topological_generations(D):
+        members = [m for c in gen for m in cond.nodes[c]["members"]]
+        stage = sorted(members, key=lambda m: vertex_key(plan.vertices[m]))
+        plan.stages.append(stage)
+    for i, stage in enumerate(plan.stages, 1):
+        for m in stage:
+            v = plan.vertices[m]
+            plan.vertices[m] = PlanVertex(v.id, v.label, v.fqn, v.kind, v.package, v.executable,
+                                          v.file, v.line, v.active, v.delay, i)
+    order = {m: i for i, m in enumerate(m for s in plan.stages for m in s)}
+    plan.edges = sorted(hard + soft, key=lambda e: (e.soft, order[e.after], order[e.before], e.reason))
+
+    # ---- critical path (hard edges, timer delays) --------------------------------------------------
+    Dh = nx.DiGraph()
+    Dh.add_nodes_from(cond.nodes())
+    Dh.add_edges_from(cond.edges())
+
+    def cdelay(c: int) -> float:
+        return max((plan.vertices[m].delay or 0.0) for m in cond.nodes[c]["members"])
+
+    best: dict[int, tuple[float, int | None]] = {}
+    for c in nx.topological_sort(Dh):
+        preds = [(best[p][0], p) for p in Dh.predecessors(c)]
+        top = max(preds, key=lambda t: (t[0], -t[1])) if preds else (0.0, None)
+        best[c] = (top[0] + cdelay(c), top[1])
+    if best:
+        def rep(c: int) -> str:
+            return min(cond.nodes[c]["members"], key=lambda m: vertex_key(plan.vertices[m]))
+
+        # longest total delay; ties: the longest chain, then the first in plan order
+        def chain_len(c: int) -> int:
+            k, cur = 0, c
+            while cur is not None:
+                k, cur = k + 1, best[cur][1]
+            return k
+
+        end = max(best, key=lambda c: (best[c][0], chain_len(c), -order[rep(c)]))
+        path = []
+        cur: int | None = end
+        while cur is not None:
+            path.append(rep(cur))
+            cur = best[cur][1]
+        plan.critical_path = path[::-1]
+        plan.critical_delay = best[end][0]
+    return plan

@@ -1,0 +1,79 @@
+"""Startup order: S101 startup-cycle, S102 handler-never-fires, S103 invalid-timer-period."""
+from __future__ import annotations
+
+import math
+from typing import Iterator
+
+from physai_lint.checks._params import effective
+from physai_lint.checks.base import CheckContext, rule
+from physai_lint.model.findings import Diagnostic, Related
+
+_VERB = {"on_process_start": "start", "on_process_exit": "exit", "on_execution_complete": "completion",
+         "on_state_transition": "a state transition"}
+
+
+@rule("S101", "startup-cycle")
+def startup_cycle(ctx: CheckContext) -> Iterator[Diagnostic]:
+    from physai_lint.graph.plan import build_plan
+
+    seen: set[object] = set()
+    for launch in ctx.launches:
+        if not launch.edges:
+            continue
+        plan = build_plan(launch, None, lambda n: effective(ctx, n))
+        labels = plan.labels
+        for cyc in plan.cycles:
+            if not cyc.deadlock:
+                continue  # a member starts: launch runs an action twice, not a deadlock
+            handlers = sorted({e.span for e in cyc.edges if e.span is not None and e.reason in _VERB},
+                              key=lambda s: (s.file, s.line, s.col))
+            if not handlers:
+                continue
+            span = handlers[0]
+            key = frozenset(cyc.nodes)
+            if (span, key) in seen:
+                continue
+            seen.add((span, key))
+            steps = []
+            for e in cyc.edges:
+                what = _VERB.get(e.reason, e.reason)
+                steps.append(f'"{labels[e.after]}" waits for {what} of "{labels[e.before]}"')
+            yield Diagnostic(
+                "S101", span,
+                f"startup cycle {cyc.text(labels)}: " + ", ".join(steps)
+                + "; each only starts from another's event handler, so none of them ever starts",
+                help="add one of them to the launch description directly (it is the root of the chain)",
+                related=tuple(Related(s, "handler in the cycle") for s in handlers[1:]),
+                key=cyc.text(labels))
+
+
+@rule("S102", "handler-never-fires")
+def handler_never_fires(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for launch in ctx.launches:
+        for span, why in launch.never_started:
+            if span in seen:
+                continue
+            seen.add(span)
+            yield Diagnostic("S102", span, f"this event handler never fires: {why}, so its actions never run",
+                             help="add the target action to the launch description, or register the "
+                                  "handler under the same condition as its target",
+                             key=why)
+
+
+@rule("S103", "invalid-timer-period")
+def invalid_timer_period(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for launch in ctx.launches:
+        for span, period, text in launch.timers:
+            if span in seen:
+                continue
+            if period is not None and (period < 0 or math.isnan(period)):
+                msg = f"TimerAction period {text} is negative: not a number of seconds to wait"
+            elif period is None and text != "unknown":
+                msg = f'TimerAction period "{text}" is not a number: launch raises when the timer runs'
+            else:
+                continue
+            seen.add(span)
+            yield Diagnostic("S103", span, msg, help="give the period as a non-negative float, e.g. 3.0",
+                             key=text)

@@ -1,0 +1,111 @@
+"""Startup plan (graph/plan.py), its renderers (report/plan_render.py) and rules S101-S103.
+
+Snapshots live in tests/plan_fixtures/snapshots; refresh with ``PHYSAI_UPDATE_SNAPSHOTS=1``.
+"""
+from __future__ import annotations
+
+import json
+import os
+from pathlib import Path
+
+import pytest
+
+from physai_lint.api_plan import compute_plan, plan
+from physai_lint.engine import CheckOptions, run_check
+from physai_lint.report.plan_render import FORMATS, render_plan
+
+HERE = Path(__file__).parent
+RULES = HERE / "rules"
+FIXTURES = HERE / "plan_fixtures"
+SNAP = FIXTURES / "snapshots"
+CODES = ("S101", "S102", "S103")
+
+
+def _cases() -> list[Path]:
+    return sorted(p for p in RULES.glob("S10[123]-*") if p.is_dir())
+
+
+def _run(case: Path) -> list[tuple[str, str, int]]:
+    files = sorted((case / "src").rglob("*.launch.py"))
+    args = {}
+    if (case / "args.txt").exists():
+        for line in (case / "args.txt").read_text().splitlines():
+            if ":=" in line:
+                k, v = line.split(":=", 1)
+                args[k.strip()] = v.strip()
+    interfaces = ["interfaces.yaml"] if (case / "interfaces.yaml").exists() else []
+    out = []
+    for f in files:
+        rep = run_check(CheckOptions(paths=[str(f.relative_to(case))], workspace=str(case),
+                                     launch_args=args, interfaces=interfaces), cwd=str(case))
+        out += [(x.code, os.path.relpath(x.span.file, case), x.span.line) for x in rep.findings]
+    return out
+
+
+@pytest.mark.parametrize("case", _cases(), ids=lambda p: p.name)
+def test_rule_fixture(case: Path) -> None:
+    code = case.name.split("-")[0]
+    expected = json.loads((case / "bad" / "expected.json").read_text())
+    got = _run(case / "bad")
+    for e in expected:
+        assert (e["code"], e["file"], e["line"]) in got, got
+    assert sorted(g for g in got if g[0] == code) == sorted((e["code"], e["file"], e["line"]) for e in expected)
+    assert [g for g in _run(case / "good") if g[0] == code] == []
+
+
+def _plan(ws: Path, entry: str):  # type: ignore[no-untyped-def]
+    return compute_plan(CheckOptions(paths=[], workspace=str(ws)), entry, cwd=str(ws))
+
+
+def test_chain_plan_structure() -> None:
+    p, _ = _plan(FIXTURES / "chain_ws", "src/demo/launch/chain.launch.py")
+    labels = p.labels
+    stage_of = {labels[v]: i for i, s in enumerate(p.stages, 1) for v in s}
+    assert stage_of["ros2_control_node"] == 1 and stage_of["spawner [joint_state_broadcaster]"] == 1
+    assert stage_of["spawner [arm_controller]"] == 2 and stage_of["rviz2"] == 2
+    assert stage_of["/talker"] == stage_of["/container"] + 1
+    assert stage_of["/planner_server"] == stage_of["/controller_server"] + 1  # lifecycle order
+    assert stage_of["/lifecycle_manager"] > stage_of["/planner_server"]
+    assert p.cycles == []
+    assert [labels[x] for x in p.critical_path] == ["ros2_control_node", "rviz2"]
+    assert p.critical_delay == 3.0
+
+
+def test_cycle_plan_is_deadlock() -> None:
+    p, _ = _plan(RULES / "S101-startup-cycle" / "bad", "src/demo/launch/x.launch.py")
+    assert len(p.cycles) == 1 and p.cycles[0].deadlock
+    assert p.cycles[0].text(p.labels) == "listener -> talker -> listener"
+    assert sum(len(s) for s in p.stages) == 2  # the cycle is condensed: still a plan
+
+
+def test_root_chain_is_not_a_deadlock() -> None:
+    p, _ = _plan(RULES / "S101-startup-cycle" / "good", "src/demo/launch/x.launch.py")
+    assert p.cycles == []
+
+
+@pytest.mark.parametrize("fmt", FORMATS)
+def test_snapshots(fmt: str) -> None:
+    ws = FIXTURES / "chain_ws"
+    text = plan(CheckOptions(paths=[], workspace=str(ws)), "src/demo/launch/chain.launch.py", fmt,
+                cwd=str(ws))
+    ext = {"text": "txt", "json": "json", "dot": "dot", "mermaid": "mmd"}[fmt]
+    snap = SNAP / f"chain.{ext}"
+    if os.environ.get("PHYSAI_UPDATE_SNAPSHOTS") or not snap.exists():
+        snap.write_text(text)
+    assert text == snap.read_text()
+    again = plan(CheckOptions(paths=[], workspace=str(ws)), "src/demo/launch/chain.launch.py", fmt,
+                 cwd=str(ws))
+    assert again == text  # deterministic
+
+
+def test_json_keys() -> None:
+    p, cwd = _plan(FIXTURES / "chain_ws", "src/demo/launch/chain.launch.py")
+    data = json.loads(render_plan(p, "json", cwd))
+    assert set(data) >= {"stages", "edges", "cycles", "critical_path", "vertices", "version"}
+    assert all(set(e) >= {"before", "after", "reason", "soft", "delay"} for e in data["edges"])
+
+
+def test_unknown_format() -> None:
+    p, cwd = _plan(FIXTURES / "chain_ws", "src/demo/launch/chain.launch.py")
+    with pytest.raises(ValueError):
+        render_plan(p, "svg", cwd)

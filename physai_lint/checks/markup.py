@@ -1,0 +1,107 @@
+"""XML/YAML markup and substitutions: L002 unknown-attribute, L114 substitution-not-in-distro."""
+from __future__ import annotations
+
+import dataclasses
+from typing import Any, Iterator
+
+from physai_lint.checks.base import CheckContext, rule
+from physai_lint.frontends.substitutions import DISTRO_ONLY_SUBSTITUTIONS
+from physai_lint.frontends.tags import unknown_markup
+from physai_lint.model.findings import Diagnostic
+from physai_lint.model.values import BoolOp, Compare, FileContent, IfElse
+
+
+@rule("L002", "unknown-attribute")
+def unknown_attribute(ctx: CheckContext) -> Iterator[Diagnostic]:
+    for path in sorted(ctx.launch_files):
+        lf = ctx.launch_files[path]
+        if lf.format not in ("xml", "yaml") or lf.markup is None:
+            continue
+        for span, message, hint in unknown_markup(lf.markup):
+            if hint and " " not in hint:
+                help_ = f'did you mean "{hint}"?'
+            else:
+                help_ = hint or "remove it; see the accepted tags and attributes in the launch docs"
+            what = "key" if lf.format == "yaml" else "attribute"
+            msg = message if lf.format == "xml" else message.replace("attribute", what)
+            yield Diagnostic(
+                "L002", span,
+                f"{msg}; launch rejects it when it parses the file",
+                help=help_, key=message)
+
+
+_PY_JAZZY = {
+    "launch.substitutions.EqualsSubstitution": "equals",
+    "launch.substitutions.NotEqualsSubstitution": "not-equals",
+    "launch.substitutions.IfElseSubstitution": "if",
+    "launch.substitutions.AnySubstitution": "any",
+    "launch.substitutions.AllSubstitution": "all",
+    "launch.substitutions.FileContent": "file-content",
+}
+_PY_NAME = {v: k.rsplit(".", 1)[-1] for k, v in _PY_JAZZY.items()}
+
+
+def _subst_name(part: Any) -> str | None:
+    if isinstance(part, Compare):
+        return part.op
+    if isinstance(part, IfElse):
+        return "if"
+    if isinstance(part, BoolOp) and part.op in ("any", "all"):
+        return part.op
+    if isinstance(part, FileContent):
+        return "file-content"
+    return None
+
+
+def _walk(obj: Any, out: list[tuple[str, Any]], depth: int = 0) -> None:
+    if depth > 60 or obj is None or isinstance(obj, (str, int, float, bool, bytes)):
+        return
+    if isinstance(obj, (tuple, list)):
+        for item in obj:
+            _walk(item, out, depth + 1)
+        return
+    if dataclasses.is_dataclass(obj):
+        name = _subst_name(obj)
+        if name is not None and getattr(obj, "span", None) is not None:
+            out.append((name, obj.span))
+        for f in dataclasses.fields(obj):
+            if f.name in ("span", "name_span", "field_spans"):
+                continue
+            _walk(getattr(obj, f.name), out, depth + 1)
+
+
+@rule("L114", "substitution-not-in-distro")
+def substitution_not_in_distro(ctx: CheckContext) -> Iterator[Diagnostic]:
+    if ctx.distro != "humble":
+        return
+    seen: set[object] = set()
+    for path in sorted(ctx.launch_files):
+        lf = ctx.launch_files[path]
+        found: list[tuple[str, Any]] = []
+        if lf.format == "python":
+            if lf.python is not None:
+                found = [(_PY_JAZZY[c.qualname], c.span) for c in lf.python.calls if c.qualname in _PY_JAZZY]
+        else:
+            _walk(lf.actions, found)
+        for name, span in found:
+            since = DISTRO_ONLY_SUBSTITUTIONS.get(name)
+            if since is None or span in seen:
+                continue
+            seen.add(span)
+            if lf.format == "python":
+                cls = _PY_NAME[name]
+                yield Diagnostic(
+                    "L114", span,
+                    f"{cls} does not exist in launch on {ctx.distro} (added in {since}); "
+                    "the import fails with ImportError",
+                    help="use PythonExpression([...]) / LaunchConfigurationEquals on humble, or "
+                         "target a newer distro with --distro",
+                    key=cls)
+            else:
+                yield Diagnostic(
+                    "L114", span,
+                    f'substitution "$({name} ...)" does not exist on {ctx.distro} (added in {since}); '
+                    f"launch fails with \"Unknown substitution: {name}\"",
+                    help="use $(eval ...) on humble (e.g. $(eval \"'$(var mode)' == 'sim'\")), or "
+                         "target a newer distro with --distro",
+                    key=name)

@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 import math
-from typing import Iterator
+from collections.abc import Iterator
 
 from physai_lint.checks._params import effective
 from physai_lint.checks.base import CheckContext, rule

@@ -26,9 +26,11 @@ member that does start is launch executing one action twice, not a deadlock.
 """
 from __future__ import annotations
 
+import itertools
 import re
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any, Callable
+from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
     from physai_lint.graph.system import SystemGraph
@@ -65,7 +67,7 @@ class PlanEdge:
     #              "lifecycle order", "topic /x"
     soft: bool
     delay: float | None = None
-    span: "Span | None" = None
+    span: Span | None = None
 
 
 @dataclass(frozen=True)
@@ -88,7 +90,7 @@ class Plan:
     cycles_truncated: bool = False
     critical_path: list[str] = field(default_factory=list)
     critical_delay: float = 0.0
-    never_started: list[tuple["Span", str]] = field(default_factory=list)
+    never_started: list[tuple[Span, str]] = field(default_factory=list)
     skipped_soft: int = 0  # soft edges left out because they would close a cycle
 
     @property
@@ -107,7 +109,7 @@ def vertex_key(v: PlanVertex) -> tuple[Any, ...]:
     return (v.fqn is None, _natural(v.fqn or v.label), _natural(v.id))
 
 
-def _labels(nodes: list["NodeInstance"]) -> dict[str, str]:
+def _labels(nodes: list[NodeInstance]) -> dict[str, str]:
     base = {n.id: n.fqn or n.executable or ("process" if n.kind == "process" else "node") for n in nodes}
     counts: dict[str, int] = {}
     for lbl in base.values():
@@ -137,7 +139,7 @@ def _param_value(params: dict[str, Any], name: str) -> Any:
     return getattr(p, "value", p)
 
 
-def _lifecycle_edges(nodes: list["NodeInstance"], effective_params: Callable[["NodeInstance"], dict]
+def _lifecycle_edges(nodes: list[NodeInstance], effective_params: Callable[[NodeInstance], dict[str, Any]]
                      ) -> list[PlanEdge]:
     from physai_lint.resolve.names import expand_topic_name
 
@@ -151,7 +153,7 @@ def _lifecycle_edges(nodes: list["NodeInstance"], effective_params: Callable[["N
             continue
         try:
             names = _param_value(effective_params(mgr), "node_names")
-        except Exception:  # unknown parameters: no lifecycle edges
+        except (KeyError, TypeError, ValueError, OSError):  # unknown parameters: no edges
             names = None
         if not isinstance(names, list):
             continue
@@ -163,7 +165,7 @@ def _lifecycle_edges(nodes: list["NodeInstance"], effective_params: Callable[["N
             for mid in ids:
                 if mid != mgr.id:
                     out.append(PlanEdge(mid, mgr.id, "lifecycle manager", False, None, mgr.span))
-        for prev, nxt in zip(managed, managed[1:]):
+        for prev, nxt in itertools.pairwise(managed):
             for a in prev:
                 for b in nxt:
                     if a != b:
@@ -171,7 +173,7 @@ def _lifecycle_edges(nodes: list["NodeInstance"], effective_params: Callable[["N
     return out
 
 
-def _topic_edges(graph: "SystemGraph | None", ids: set[str]) -> list[PlanEdge]:
+def _topic_edges(graph: SystemGraph | None, ids: set[str]) -> list[PlanEdge]:
     if graph is None:
         return []
     pubs: dict[str, set[str]] = {}
@@ -212,9 +214,9 @@ def _startable(vertices: set[str], hard: list[PlanEdge], active: dict[str, bool 
     return ok
 
 
-def build_plan(launch: "LaunchResult", graph: "SystemGraph | None",
-               effective_params: Callable[["NodeInstance"], dict]) -> Plan:
-    import networkx as nx
+def build_plan(launch: LaunchResult, graph: SystemGraph | None,
+               effective_params: Callable[[NodeInstance], dict[str, Any]]) -> Plan:
+    import networkx as nx  # type: ignore[import-untyped]
 
     nodes = [n for n in launch.nodes if n.active is not False]
     labels = _labels(nodes)
@@ -227,10 +229,10 @@ def build_plan(launch: "LaunchResult", graph: "SystemGraph | None",
 
     hard: list[PlanEdge] = []
     seen: set[tuple[str, str, str]] = set()
-    for e in launch.edges:
-        if e.before in ids and e.after in ids and not e.soft and (e.before, e.after, e.reason) not in seen:
-            seen.add((e.before, e.after, e.reason))
-            hard.append(PlanEdge(e.before, e.after, e.reason, False, e.delay, e.span))
+    for se in launch.edges:
+        if se.before in ids and se.after in ids and not se.soft and (se.before, se.after, se.reason) not in seen:
+            seen.add((se.before, se.after, se.reason))
+            hard.append(PlanEdge(se.before, se.after, se.reason, False, se.delay, se.span))
     for e in _lifecycle_edges(nodes, effective_params):
         if (e.before, e.after, e.reason) not in seen and not any(
                 (e.before, e.after) == (h.before, h.after) for h in hard):
@@ -306,14 +308,17 @@ def build_plan(launch: "LaunchResult", graph: "SystemGraph | None",
         best[c] = (top[0] + cdelay(c), top[1])
     if best:
         def rep(c: int) -> str:
-            return min(cond.nodes[c]["members"], key=lambda m: vertex_key(plan.vertices[m]))
+            return str(min(cond.nodes[c]["members"], key=lambda m: vertex_key(plan.vertices[m])))
 
         # longest total delay; ties: the longest chain, then the first in plan order
         def chain_len(c: int) -> int:
-            k, cur = 0, c
-            while cur is not None:
-                k, cur = k + 1, best[cur][1]
-            return k
+            k, at = 0, c
+            while True:
+                k += 1
+                prev = best[at][1]
+                if prev is None:
+                    return k
+                at = prev
 
         end = max(best, key=lambda c: (best[c][0], chain_len(c), -order[rep(c)]))
         path = []

@@ -85,8 +85,8 @@ def _text(plan: Plan, cwd: str) -> str:
     n_hard = sum(1 for e in plan.edges if not e.soft)
     n_soft = len(plan.edges) - n_hard
     out = [f"Startup plan: {_rel(plan.entry, cwd)}",
-           f"  {len(plan.vertices)} processes in {len(plan.stages)} stage(s); "
-           f"{n_hard} ordering edge(s), {n_soft} topic need(s) (soft)", ""]
+           (f"  {len(plan.vertices)} processes in {len(plan.stages)} stage(s); "
+            f"{n_hard} ordering edge(s), {n_soft} topic need(s) (soft)"), ""]
     width = max((len(v.label) for v in plan.vertices.values()), default=0)
     width = min(width, 48)
     for i, stage in enumerate(plan.stages, 1):

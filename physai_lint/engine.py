@@ -98,13 +98,14 @@ def build_project(opts: CheckOptions, cwd: str | None = None) -> Project:
     for entry in launch_files:
         results.append(resolve_launch(entry, dict(opts.launch_args), loader, packages,
                                       explicit_entry=entry in explicit))
-    # A file that another file includes is analysed through its includer, not on its own,
-    # unless the user named it explicitly.
-    included = {f for r in results for f in r.files[1:]}
-    launches = [r for r in results if r.entry in explicit or r.entry not in included]
+    # A file that another analysed file includes is analysed through its includer (which gives it
+    # its real arguments and namespace), not on its own; a file nobody includes is a root.
+    included = {f for r in results for f in r.files[1:] if f != r.entry}
+    launches = [r for r in results if r.entry not in included] or results
     targets = set(paths) | set(found.launch_files) | set(found.param_files)
     for r in launches:
-        if r.entry in explicit or any(r.entry.startswith(p.rstrip("/") + "/") for p in paths):
+        if r.entry in explicit or any(r.entry.startswith(p.rstrip("/") + "/") for p in paths) or \
+                any(f in explicit for f in r.files):
             targets.update(r.files)
             targets.update(_param_sources(r))
     param_models = _load_params(store, sorted(set(found.param_files) | _all_param_sources(launches)),

@@ -18,6 +18,28 @@ def _fmt(value: Any) -> str:
     return repr(value)
 
 
+def _article(word: str | None) -> str:
+    return "an" if (word or "x")[0] in "aeiou" else "a"
+
+
+def _source(source: str) -> str:
+    """A declaration's source for messages: workspace paths relative to the working directory."""
+    import os
+
+    out = []
+    for part in source.split(" + "):
+        head, sep, tail = part.rpartition(" ")
+        path = tail if tail.startswith("/") else part
+        if path.startswith("/"):
+            try:
+                rel = os.path.relpath(path).replace(os.sep, "/")
+            except ValueError:
+                rel = path
+            part = (head + sep if tail.startswith("/") else "") + rel
+        out.append(part)
+    return " + ".join(out)
+
+
 def _declared(ctx: CheckContext) -> Iterator[tuple[Any, Any, Any, Any]]:
     """(node, effective param, declaration, interface) for params whose declaration is known."""
     for _, node in nodes_with_params(ctx):
@@ -47,11 +69,11 @@ def type_mismatch(ctx: CheckContext) -> Iterator[Diagnostic]:
             fix = f" (write {ep.value}.0)"
         elif decl.type == "double_array" and got == "integer_array":
             fix = " (write every item with a decimal point, e.g. 1.0)"
-        where = f" ({decl.source})" if decl.source else ""
+        where = f" ({_source(decl.source)})" if decl.source else ""
         yield Diagnostic(
             "P105", ep.origin,
             f'parameter "{ep.name}" of {node.fqn or node.executable} is declared {decl.type}{where} '
-            f"but is given {_fmt(ep.value)}, a {got}; the node fails at start-up with "
+            f"but is given {_fmt(ep.value)}, {_article(got)} {got}; the node fails at start-up with "
             f"InvalidParameterTypeException{fix}",
             help=f"give a {decl.type} value{fix}",
             related=((Related(decl.span, "declared here"),) if decl.span else ()),
@@ -93,7 +115,7 @@ def _validate(ctx: CheckContext, choices: bool) -> Iterator[Diagnostic]:
         yield Diagnostic(
             code, ep.origin,
             f'parameter "{ep.name}" of {node.fqn or node.executable}: {"; ".join(dict.fromkeys(problems))}'
-            f"{f' ({decl.source})' if decl.source else ''}; the node rejects it at start-up",
+            f"{f' ({_source(decl.source)})' if decl.source else ''}; the node rejects it at start-up",
             help="use a value the declaration accepts",
             related=((Related(decl.span, "declared here"),) if decl.span else ()),
             key=f"{node.fqn}:{ep.name}")

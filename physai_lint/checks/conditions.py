@@ -1,0 +1,148 @@
+"""Conditions that can never hold: L108 condition-never-true.
+
+Conservative by design: a condition is reported only when every input is known (literals, and
+launch arguments whose ``choices`` bound their values, never changed by ``SetLaunchConfiguration``
+/ ``<let>`` / group-local configurations anywhere in the checked files).
+"""
+from __future__ import annotations
+
+from typing import Any, Iterator
+
+from physai_lint.checks.base import CheckContext, rule
+from physai_lint.model import launch as ir
+from physai_lint.model.findings import Diagnostic
+from physai_lint.model.values import Compare, LaunchConfig, Text, literal_of
+
+_TRUE = {"true", "1"}
+_FALSE = {"false", "0"}
+
+
+def _children(a: Any) -> tuple[Any, ...]:
+    if isinstance(a, (ir.Group, ir.Timer, ir.EventHandler, ir.OpaqueAction)):
+        return a.actions
+    return ()
+
+
+def _walk(actions: tuple[Any, ...]) -> Iterator[Any]:
+    for a in actions:
+        yield a
+        yield from _walk(_children(a))
+
+
+def _config_name(value: Any) -> str | None:
+    """``$(var x)`` / ``LaunchConfiguration('x')`` without a default -> ``x``."""
+    if not value or len(value) != 1 or not isinstance(value[0], LaunchConfig):
+        return None
+    return literal_of(value[0].name)
+
+
+def _set_names(ctx: CheckContext) -> set[str] | None:
+    """Names set by SetLaunchConfiguration / group configurations anywhere (None: unknown name)."""
+    out: set[str] = set()
+    for lf in ctx.launch_files.values():
+        for a in _walk(lf.actions):
+            pairs: list[Any] = []
+            if isinstance(a, ir.SetLaunchConfiguration):
+                pairs.append(a.name)
+            elif isinstance(a, ir.Group):
+                pairs.extend(k for k, _ in a.launch_configurations)
+            elif isinstance(a, ir.OpaqueAction) and a.reason:
+                return None
+            for name in pairs:
+                lit = literal_of(name)
+                if lit is None:
+                    return None
+                out.add(lit)
+    return out
+
+
+def _choices(lf: ir.LaunchFile) -> dict[str, tuple[str, ...]]:
+    out: dict[str, tuple[str, ...]] = {}
+    for a in _walk(lf.actions):
+        if isinstance(a, ir.DeclareArgument) and a.choices:
+            if a.name in out and out[a.name] != a.choices:
+                out[a.name] = ()  # declared twice, differently: unknown
+            else:
+                out[a.name] = a.choices
+    return {k: v for k, v in out.items() if v}
+
+
+def _compare_dead(cond: ir.Condition, choices: dict[str, tuple[str, ...]],
+                  set_names: set[str]) -> str | None:
+    if len(cond.value) != 1 or not isinstance(cond.value[0], Compare):
+        return None
+    cmp = cond.value[0]
+    name = _config_name(cmp.left)
+    right = literal_of(cmp.right)
+    if name is None or right is None:
+        name, right = _config_name(cmp.right), literal_of(cmp.left)
+    if name is None or right is None or name in set_names or name not in choices:
+        return None
+    options = choices[name]
+    equal_possible = right in options
+    never_true = (cond.kind == "if" and cmp.op == "equals" and not equal_possible) or \
+                 (cond.kind == "unless" and cmp.op == "not-equals" and not equal_possible)
+    if not never_true:
+        return None
+    listed = ", ".join(f'"{c}"' for c in options)
+    return (f'launch argument "{name}" is compared with "{right}", which is not one of its choices '
+            f"({listed}), so the condition is never true")
+
+
+def _literal_dead(cond: ir.Condition) -> str | None:
+    if not cond.value or not all(isinstance(p, Text) for p in cond.value):
+        return None
+    text = (literal_of(cond.value) or "").strip().lower()
+    if (cond.kind == "if" and text in _FALSE) or (cond.kind == "unless" and text in _TRUE):
+        return f'the condition is the constant "{literal_of(cond.value)}", so it is never true'
+    return None
+
+
+def _nested(actions: tuple[Any, ...], outer: dict[str, tuple[str, Any]],
+            out: list[tuple[Any, str]], set_names: set[str]) -> None:
+    for a in actions:
+        cond = getattr(a, "condition", None)
+        inner = dict(outer)
+        if isinstance(cond, ir.Condition):
+            name = _config_name(cond.value)
+            if name is not None and name not in set_names:
+                prev = outer.get(name)
+                if prev is not None and prev[0] != cond.kind:
+                    out.append((cond, f'it is "{cond.kind}" on launch configuration "{name}" inside a '
+                                      f'group that is "{prev[0]}" on the same configuration (line '
+                                      f"{prev[1].span.line}), so it is never true"))
+                inner[name] = (cond.kind, cond)
+        if isinstance(a, ir.Group):
+            _nested(a.actions, inner, out, set_names)
+
+
+@rule("L108", "condition-never-true")
+def condition_never_true(ctx: CheckContext) -> Iterator[Diagnostic]:
+    set_names = _set_names(ctx)
+    for path in sorted(ctx.launch_files):
+        lf = ctx.launch_files[path]
+        found: list[tuple[ir.Condition, str]] = []
+        choices = _choices(lf) if set_names is not None else {}
+        for a in _walk(lf.actions):
+            conds = [getattr(a, "condition", None)]
+            if isinstance(a, ir.NodeAction):
+                conds += [c.condition for c in a.composable_nodes]
+            for cond in conds:
+                if not isinstance(cond, ir.Condition):
+                    continue
+                why = _literal_dead(cond) or _compare_dead(cond, choices, set_names or set())
+                if why:
+                    found.append((cond, why))
+        if set_names is not None:
+            _nested(lf.actions, {}, found, set_names)
+        seen: set[object] = set()
+        for cond, why in found:
+            if cond.span in seen:
+                continue
+            seen.add(cond.span)
+            raw = cond.raw or cond.kind
+            yield Diagnostic(
+                "L108", cond.span,
+                f"{raw}: {why}; the action is never run",
+                help="fix the compared value or the condition, or remove the action if it is dead code",
+                key=raw)

@@ -118,7 +118,7 @@ def _dangling(ctx: CheckContext, mine: str, other: str, code: str) -> Iterator[D
             if (span, e.resolved) in seen:
                 continue
             seen.add((span, e.resolved))
-            close = similar(e.resolved, others)
+            close = similar(e.resolved, others, 0.8 if mine == "publisher" else 0.6)
             if mine == "publisher" and not close:
                 continue  # an output nobody reads is normal (sensors, diagnostics); a near miss is not
             hint = (" (did you mean " + " or ".join(f'"{c}"' for c in close) + "?)") if close else ""

@@ -136,11 +136,11 @@ def to_networkx(g: SystemGraph) -> Any:
     return dg
 
 
-def similar(name: str, candidates: Iterable[str]) -> list[str]:
+def similar(name: str, candidates: Iterable[str], cutoff: float = 0.6) -> list[str]:
     import difflib
 
     pool = sorted(set(candidates) - {name})
-    close = difflib.get_close_matches(name, pool, n=3, cutoff=0.6)
+    close = difflib.get_close_matches(name, pool, n=3, cutoff=cutoff)
     base = name.rsplit("/", 1)[-1]
     by_base = [c for c in pool if c.rsplit("/", 1)[-1] == base and c not in close]
     return (close + by_base)[:3]

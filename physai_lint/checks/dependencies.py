@@ -38,3 +38,45 @@ def missing_exec_depend(ctx: CheckContext) -> Iterator[Diagnostic]:
             f'does not declare it (no <exec_depend> or <depend>)',
             help=f'add <exec_depend>{name}</exec_depend> to the package.xml of "{owner.name}"',
             key=f"{owner.name}->{name}")
+
+
+def _share_path(ctx: CheckContext, arg: str) -> str | None:
+    """The package when ``arg`` is a path inside a workspace package's (virtual) share dir."""
+    root = getattr(ctx.packages, "install_root", None)
+    if not root or not arg.startswith(root + "/"):
+        return None
+    name, _, rest = arg[len(root) + 1 :].partition("/")
+    if ctx.packages.workspace_package(name) is None or not rest.startswith(f"share/{name}/"):
+        return None
+    return name
+
+
+@rule("U104", "missing-file")
+def missing_file(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[tuple[object, str]] = set()
+    for launch in ctx.launches:
+        for node in launch.nodes:
+            for arg in node.arguments:
+                if not arg or "/share/" not in arg:
+                    continue
+                pkg = _share_path(ctx, arg)
+                if pkg is None:
+                    continue
+                loc = ctx.packages.locate(arg)
+                if loc.status not in ("missing", "not_installed"):
+                    continue
+                span = node.spans.get("arguments", node.span)
+                if (span, arg) in seen:
+                    continue
+                seen.add((span, arg))
+                rel = arg.split(f"/share/{pkg}/", 1)[1]
+                if loc.status == "missing":
+                    msg = (f'file "{rel}" passed in the arguments of the node does not exist in package '
+                           f'"{pkg}" (it would be opened as "share/{pkg}/{rel}")')
+                    fix = f'check the path, or add "{rel}" to package "{pkg}" and install it'
+                else:
+                    msg = (f'file "{rel}" passed in the arguments of the node exists in the sources of '
+                           f'package "{pkg}" but is not installed to "share/{pkg}/{rel}"')
+                    fix = loc.install_hint or "add an install rule for it (CMake install(DIRECTORY ...) " \
+                                              "or setup.py data_files)"
+                yield Diagnostic("U104", span, msg, help=fix, key=f"{pkg}/{rel}")

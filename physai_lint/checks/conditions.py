@@ -6,7 +6,8 @@ launch arguments whose ``choices`` bound their values, never changed by ``SetLau
 """
 from __future__ import annotations
 
-from typing import Any, Iterator
+from collections.abc import Iterator
+from typing import Any
 
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model import launch as ir
@@ -108,9 +109,9 @@ def _nested(actions: tuple[Any, ...], outer: dict[str, tuple[str, Any]],
             if name is not None and name not in set_names:
                 prev = outer.get(name)
                 if prev is not None and prev[0] != cond.kind:
-                    out.append((cond, f'it is "{cond.kind}" on launch configuration "{name}" inside a '
+                    out.append((cond, (f'it is "{cond.kind}" on launch configuration "{name}" inside a '
                                       f'group that is "{prev[0]}" on the same configuration (line '
-                                      f"{prev[1].span.line}), so it is never true"))
+                                      f"{prev[1].span.line}), so it is never true")))
                 inner[name] = (cond.kind, cond)
         if isinstance(a, ir.Group):
             _nested(a.actions, inner, out, set_names)

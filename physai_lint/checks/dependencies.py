@@ -1,7 +1,7 @@
 """Package dependencies of launch files: U103 missing-exec-depend (ECOSYSTEM §5)."""
 from __future__ import annotations
 
-from typing import Iterator
+from collections.abc import Iterator
 
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic

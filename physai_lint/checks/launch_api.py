@@ -1,7 +1,7 @@
 """Python launch API signatures: L001 unknown-keyword-argument (SEMANTICS §8)."""
 from __future__ import annotations
 
-from typing import Iterator
+from collections.abc import Iterator
 
 from physai_lint.checks._util import suggestion
 from physai_lint.checks.base import CheckContext, rule

@@ -2,7 +2,8 @@
 from __future__ import annotations
 
 import dataclasses
-from typing import Any, Iterator
+from collections.abc import Iterator
+from typing import Any
 
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.frontends.substitutions import DISTRO_ONLY_SUBSTITUTIONS
@@ -62,8 +63,9 @@ def _walk(obj: Any, out: list[tuple[str, Any]], depth: int = 0) -> None:
         return
     if dataclasses.is_dataclass(obj):
         name = _subst_name(obj)
-        if name is not None and getattr(obj, "span", None) is not None:
-            out.append((name, obj.span))
+        span = getattr(obj, "span", None)
+        if name is not None and span is not None:
+            out.append((name, span))
         for f in dataclasses.fields(obj):
             if f.name in ("span", "name_span", "field_spans"):
                 continue

@@ -2,7 +2,7 @@
 L111 scoped-group-leak, L112 dirname-after-include, L113 set-use-sim-time-no-effect."""
 from __future__ import annotations
 
-from typing import Iterator
+from collections.abc import Iterator
 
 from physai_lint.checks._util import all_nodes, where
 from physai_lint.checks.base import CheckContext, rule

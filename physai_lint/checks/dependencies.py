@@ -1,11 +1,14 @@
 """Package dependencies of launch files: U103 missing-exec-depend (ECOSYSTEM §5)."""
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Iterator
+from typing import Any
 
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic
 from physai_lint.model.span import Span
+from physai_lint.model.values import Command, FindPackage, PathJoin, literal_of
 
 
 def _references(ctx: CheckContext) -> Iterator[tuple[str, Span, str]]:
@@ -80,3 +83,67 @@ def missing_file(ctx: CheckContext) -> Iterator[Diagnostic]:
                     fix = loc.install_hint or "add an install rule for it (CMake install(DIRECTORY ...) " \
                                               "or setup.py data_files)"
                 yield Diagnostic("U104", span, msg, help=fix, key=f"{pkg}/{rel}")
+    yield from _command_files(ctx, seen)
+
+
+def _collect_commands(obj: Any, out: list[Command], depth: int = 0) -> None:
+    if depth > 60 or obj is None or isinstance(obj, (str, int, float, bool, bytes)):
+        return
+    if isinstance(obj, (tuple, list)):
+        for item in obj:
+            _collect_commands(item, out, depth + 1)
+        return
+    if isinstance(obj, Command):
+        out.append(obj)
+        return
+    if dataclasses.is_dataclass(obj):
+        for f in dataclasses.fields(obj):
+            if f.name not in ("span", "name_span", "field_spans"):
+                _collect_commands(getattr(obj, f.name), out, depth + 1)
+
+
+def _known_share_path(ctx: CheckContext, join: PathJoin) -> tuple[str, str] | None:
+    """(package, relative path) of ``PathJoin([FindPackageShare('p'), 'a', 'b'])`` with literals."""
+    if not join.parts or len(join.parts[0]) != 1 or not isinstance(join.parts[0][0], FindPackage):
+        return None
+    find = join.parts[0][0]
+    pkg = literal_of(find.package)
+    if find.kind != "share" or pkg is None or ctx.packages.workspace_package(pkg) is None:
+        return None
+    rest = [literal_of(p) for p in join.parts[1:]]
+    if not rest or any(r is None or r == "" for r in rest):
+        return None
+    return pkg, "/".join(r.strip("/") for r in rest if r)
+
+
+def _command_files(ctx: CheckContext, seen: set[tuple[object, str]]) -> Iterator[Diagnostic]:
+    """Files given to ``Command([...])`` (xacro, cat) as a known ``PathJoinSubstitution``."""
+    root = getattr(ctx.packages, "install_root", None)
+    if not root:
+        return
+    for path in sorted(ctx.launch_files):
+        commands: list[Command] = []
+        _collect_commands(ctx.launch_files[path].actions, commands)
+        for cmd in commands:
+            for part in cmd.command:
+                if not isinstance(part, PathJoin) or part.span is None:
+                    continue
+                known = _known_share_path(ctx, part)
+                if known is None:
+                    continue
+                pkg, rel = known
+                if (part.span, rel) in seen:
+                    continue
+                loc = ctx.packages.locate(f"{root}/{pkg}/share/{pkg}/{rel}")
+                if loc.status not in ("missing", "not_installed"):
+                    continue
+                seen.add((part.span, rel))
+                if loc.status == "missing":
+                    msg = (f'file "{rel}" given to Command(...) does not exist in package "{pkg}" '
+                           f'(it would be opened as "share/{pkg}/{rel}"); the command fails at launch')
+                    fix = f'check the file name, or add "{rel}" to package "{pkg}" and install it'
+                else:
+                    msg = (f'file "{rel}" given to Command(...) is in the sources of package "{pkg}" '
+                           f'but is not installed to "share/{pkg}/{rel}"')
+                    fix = loc.install_hint or "add an install rule for it"
+                yield Diagnostic("U104", part.span, msg, help=fix, key=f"{pkg}/{rel}")

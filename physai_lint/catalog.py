@@ -47,12 +47,9 @@ def rules_dir() -> Path:
     override = os.environ.get("PHYSAI_LINT_RULES_DIR")
     if override:
         return Path(override)
-    try:
-        from importlib.resources import files
+    from physai_lint.resources import data_dir
 
-        return Path(str(files("physai_lint._rules")))
-    except (ModuleNotFoundError, TypeError):
-        return Path(__file__).resolve().parent.parent / "rules"
+    return data_dir("_rules")
 
 
 def split_sections(body: str) -> dict[str, str]:

@@ -128,15 +128,9 @@ def _build(path: Path, t: Mapping[str, Any]) -> Config:
 
 def schema_path(name: str) -> Path:
     """A bundled schema: installed package data, else the source checkout's ``schemas/``."""
-    try:
-        from importlib.resources import files
+    from physai_lint.resources import data_dir
 
-        candidate = Path(str(files("physai_lint._schemas"))) / name
-        if candidate.is_file():
-            return candidate
-    except (ModuleNotFoundError, TypeError):
-        pass
-    return Path(__file__).resolve().parent.parent / "schemas" / name
+    return data_dir("_schemas") / name
 
 
 def _validate(table: Mapping[str, Any], shown: str, where: str) -> None:

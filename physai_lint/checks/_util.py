@@ -2,7 +2,8 @@
 from __future__ import annotations
 
 import difflib
-from typing import Iterable, Iterator
+import os
+from collections.abc import Iterable, Iterator
 
 from physai_lint.checks.base import CheckContext
 from physai_lint.resolve.model import LaunchResult, NodeInstance
@@ -35,3 +36,13 @@ def all_nodes(ctx: CheckContext, include_inactive: bool = True) -> Iterator[tupl
 
 def where(node: NodeInstance) -> str:
     return node.fqn or (f'"{node.package}/{node.executable}"' if node.package else "the node")
+
+
+def relpath(path: str | None) -> str:
+    """A path for messages, relative to the working directory when possible."""
+    if not path:
+        return "?"
+    try:
+        return os.path.relpath(path).replace(os.sep, "/")
+    except ValueError:
+        return path

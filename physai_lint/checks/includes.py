@@ -1,21 +1,12 @@
 """Includes: L105 include-file-missing, L106 include-undeclared-argument, L107 include-cycle."""
 from __future__ import annotations
 
-import os
-from typing import Iterator
+from collections.abc import Iterator
 
+from physai_lint.checks._util import relpath as _rel
 from physai_lint.checks._util import suggestion
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic
-
-
-def _rel(path: str | None) -> str:
-    if not path:
-        return "?"
-    try:
-        return os.path.relpath(path).replace(os.sep, "/")
-    except ValueError:
-        return path
 
 
 @rule("L105", "include-file-missing")

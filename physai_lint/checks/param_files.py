@@ -2,22 +2,13 @@
 P103 parameter-file-no-match, P104 parameter-file-structure, P106 mixed-type-array."""
 from __future__ import annotations
 
-import os
-from typing import Iterator
+from collections.abc import Iterator
 
 from physai_lint.checks._util import all_nodes
+from physai_lint.checks._util import relpath as _rel
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic, Related
 from physai_lint.resolve.model import ResolvedParamFile
-
-
-def _rel(path: str | None) -> str:
-    if not path:
-        return "?"
-    try:
-        return os.path.relpath(path).replace(os.sep, "/")
-    except ValueError:
-        return path
 
 
 @rule("P101", "parameter-file-missing")

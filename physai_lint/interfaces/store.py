@@ -36,16 +36,10 @@ Key = tuple[str, str]
 
 
 def _schemas_dir() -> Path | None:
-    try:
-        from importlib.resources import files
+    from physai_lint.resources import data_dir
 
-        p = files("physai_lint").joinpath("_schemas")
-        if p.is_dir():  # type: ignore[union-attr]
-            return Path(str(p))
-    except (ModuleNotFoundError, TypeError, AttributeError):
-        pass
-    here = Path(__file__).resolve().parents[2] / "schemas"
-    return here if here.is_dir() else None
+    d = data_dir("_schemas")
+    return d if d.is_dir() else None
 
 
 # ---- interfaces files -------------------------------------------------------------------------

@@ -7,11 +7,9 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from physai_lint.errors import ConfigError, UsageError
-from physai_lint.files import FileStore, internal_error, is_launch_file
+from physai_lint.files import FileStore, internal_error
 from physai_lint.model.findings import SEVERITY_RANK, Diagnostic, Finding
 from physai_lint.model.span import Span
-
-DISTROS = ("humble", "jazzy", "kilted", "lyrical", "rolling")
 
 
 @dataclass
@@ -72,8 +70,8 @@ def build_project(opts: CheckOptions, cwd: str | None = None) -> Project:
     from physai_lint.resolve.instantiate import resolve_launch
 
     cwd = (cwd or os.getcwd()).replace(os.sep, "/")
-    if opts.distro not in DISTROS:
-        raise UsageError(f'unknown distro "{opts.distro}" (expected one of: {", ".join(DISTROS)})')
+    if opts.distro not in ws.DISTROS:
+        raise UsageError(f'unknown distro "{opts.distro}" (expected one of: {", ".join(ws.DISTROS)})')
     paths = [_abs(p, cwd) for p in opts.paths]
     try:
         found = ws.discover(paths, respect_gitignore=opts.respect_gitignore)

@@ -6,15 +6,14 @@ and never a traceback; each frontend is called at most once per file per run.
 from __future__ import annotations
 
 import os
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Callable
 
 from physai_lint.model.findings import Diagnostic
 from physai_lint.model.launch import LaunchFile
 from physai_lint.model.span import Span
 
 MAX_FILE_BYTES = 64 * 1024 * 1024
-LAUNCH_SUFFIXES = ("launch.py", "launch.xml", "launch.yaml")
 
 
 def launch_format(path: str) -> str | None:
@@ -27,10 +26,6 @@ def launch_format(path: str) -> str | None:
     if low.endswith((".yaml", ".yml")):
         return "yaml"
     return None
-
-
-def is_launch_file(path: str) -> bool:
-    return os.path.basename(path).endswith(LAUNCH_SUFFIXES)
 
 
 @dataclass
@@ -72,7 +67,7 @@ class FileStore:
             self._fail(path, Span.point(path, line, col),
                        f"file is not valid UTF-8: byte 0x{data[exc.start]:02x} at line {line}, column {col}")
             return None
-        return text[1:] if text.startswith("\ufeff") else text
+        return text.removeprefix("\ufeff")
 
     def _fail(self, path: str, span: Span, message: str) -> None:
         self.failed.add(path)

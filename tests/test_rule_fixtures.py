@@ -19,7 +19,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
 from physai_lint.engine import CheckOptions, run_check  # noqa: E402
-from physai_lint.files import is_launch_file  # noqa: E402
+from physai_lint.workspace import is_launch_file  # noqa: E402
 
 RULES = ROOT / "tests" / "rules"
 FOLDERS = sorted(p for p in RULES.iterdir() if p.is_dir()) if RULES.is_dir() else []

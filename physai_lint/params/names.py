@@ -2,46 +2,11 @@
 built on the rmw namespace and node-name validators (ECOSYSTEM.md §3)."""
 from __future__ import annotations
 
-import string
+from physai_lint.resolve.names import validate_namespace, validate_node_name
 
-_ALNUM_ = frozenset(string.ascii_letters + string.digits + "_")
-NODE_NAME_MAX = 255
-NAMESPACE_MAX = 245
-
-
-def rmw_node_name_problem(name: str) -> str | None:
-    if not name:
-        return "node name must not be empty"
-    for ch in name:
-        if ch not in _ALNUM_:
-            return f"node name must not contain characters other than alphanumerics or '_' ({ch!r})"
-    if name[0].isdigit():
-        return "node name must not start with a number"
-    if len(name) > NODE_NAME_MAX:
-        return f"node name length should not exceed {NODE_NAME_MAX}"
-    return None
-
-
-def rmw_namespace_problem(ns: str) -> str | None:
-    if ns == "/":
-        return None
-    if not ns:
-        return "namespace must not be empty"
-    if ns[0] != "/":
-        return "namespace must be absolute, it must lead with a '/'"
-    if ns.endswith("/"):
-        return "namespace must not end with a '/', unless only a '/'"
-    for ch in ns:
-        if ch != "/" and ch not in _ALNUM_:
-            return f"namespace must not contain characters other than alphanumerics, '_', or '/' ({ch!r})"
-    if "//" in ns:
-        return "namespace must not contain repeated '/'"
-    for i, ch in enumerate(ns[:-1]):
-        if ch == "/" and ns[i + 1].isdigit():
-            return "namespace must not have a token that starts with a number"
-    if len(ns) > NAMESPACE_MAX:
-        return f"namespace should not exceed {NAMESPACE_MAX} characters"
-    return None
+# rcl validates node keys with the same rmw validators the launch side mirrors.
+rmw_node_name_problem = validate_node_name
+rmw_namespace_problem = validate_namespace
 
 
 def validate_node_key(name: str) -> str | None:

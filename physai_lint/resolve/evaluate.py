@@ -8,8 +8,9 @@ of configurations that nothing defines.
 from __future__ import annotations
 
 import posixpath
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any, Callable
+from typing import TYPE_CHECKING, Any
 
 from physai_lint.model import values as v
 from physai_lint.model.span import Span
@@ -64,7 +65,7 @@ def _as_bool_or_float(text: str) -> Any:
 class Evaluator:
     def __init__(
         self,
-        packages: "PackageIndex | None",
+        packages: PackageIndex | None,
         on_read: ReadHook | None = None,
         on_package: PackageHook | None = None,
         on_bad_condition: Callable[[Span | None, str], None] | None = None,
@@ -88,7 +89,7 @@ class Evaluator:
                 out.append(s)
         return None if unknown else "".join(out)
 
-    def _part(self, p: v.Subst, scope: Scope) -> str | None:  # noqa: C901 - a dispatch table
+    def _part(self, p: v.Subst, scope: Scope) -> str | None:
         if isinstance(p, v.Text):
             return p.text
         if isinstance(p, v.LaunchConfig):

@@ -5,8 +5,9 @@ set and never restored."""
 from __future__ import annotations
 
 import posixpath
+from collections.abc import Iterator
 from dataclasses import replace
-from typing import TYPE_CHECKING, Iterator
+from typing import TYPE_CHECKING
 
 from physai_lint.model import launch as ir
 from physai_lint.resolve.evaluate import Scope
@@ -32,7 +33,7 @@ def declared_arguments(actions: tuple[ir.Action, ...], conditional: bool = False
             yield from declared_arguments(a.actions, True)
 
 
-def include(inst: "Instantiator", a: ir.Include, scope: Scope) -> None:
+def include(inst: Instantiator, a: ir.Include, scope: Scope) -> None:
     fr = inst.frame
     path = inst.ev.eval(a.path, scope)
     args: list[tuple[str, str | None, object]] = []

@@ -9,16 +9,20 @@ points at the included file's folder.
 from __future__ import annotations
 
 import posixpath
+from collections.abc import Callable
 from dataclasses import dataclass, field, replace
-from typing import TYPE_CHECKING, Any, Callable
+from typing import TYPE_CHECKING, Any
 
 from physai_lint.model import launch as ir
-from physai_lint.model import values as v
 from physai_lint.model.span import Span
 from physai_lint.resolve import names
 from physai_lint.resolve.evaluate import Evaluator, Scope
 from physai_lint.resolve.model import (
-    ConfigRead, DeclaredArg, IncludeRecord, LaunchResult, StartEdge,
+    ConfigRead,
+    DeclaredArg,
+    IncludeRecord,
+    LaunchResult,
+    StartEdge,
 )
 from physai_lint.resolve.nodes import NodeBuilder
 
@@ -26,7 +30,6 @@ if TYPE_CHECKING:
     from physai_lint.workspace import PackageIndex
 
 Loader = Callable[[str], "ir.LaunchFile | None"]
-MAX_INCLUDE_DEPTH = 40
 MAX_ACTIONS = 200_000
 
 REMAPS, PARAMS, NS = "ros_remaps", "global_params", "ros_namespace"
@@ -56,7 +59,7 @@ def combine(a: bool | None, b: bool | None) -> bool | None:
 
 
 class Instantiator:
-    def __init__(self, loader: Loader, packages: "PackageIndex | None", explicit_entry: bool) -> None:
+    def __init__(self, loader: Loader, packages: PackageIndex | None, explicit_entry: bool) -> None:
         self.loader = loader
         self.packages = packages
         self.explicit_entry = explicit_entry
@@ -142,7 +145,7 @@ class Instantiator:
         finally:
             self.frame = outer
 
-    def _dispatch(self, a: ir.Action, scope: Scope) -> None:  # noqa: C901 - one branch per action
+    def _dispatch(self, a: ir.Action, scope: Scope) -> None:
         if isinstance(a, ir.DeclareArgument):
             self._declare(a, scope)
         elif isinstance(a, ir.SetLaunchConfiguration):
@@ -339,23 +342,7 @@ class Instantiator:
 
 
 def resolve_launch(entry: str, cli_args: dict[str, str], loader: Loader,
-                   packages: "PackageIndex | None", explicit_entry: bool = True) -> LaunchResult:
+                   packages: PackageIndex | None, explicit_entry: bool = True) -> LaunchResult:
     """Resolve one entry launch file as ``ros2 launch`` would, with ``NAME:=VALUE`` arguments."""
     return Instantiator(loader, packages, explicit_entry).run(entry, cli_args)
 
-
-def value_text(value: v.Value | None) -> str:
-    """A readable rendering of a value for messages (``$(var x)`` for unknown parts)."""
-    if value is None:
-        return ""
-    out = []
-    for p in value:
-        if isinstance(p, v.Text):
-            out.append(p.text)
-        elif isinstance(p, v.LaunchConfig):
-            out.append(f"$(var {value_text(p.name)})")
-        elif isinstance(p, v.FindPackage):
-            out.append(f"$(find-pkg-{p.kind} {value_text(p.package)})")
-        else:
-            out.append(f"$({type(p).__name__})")
-    return "".join(out)

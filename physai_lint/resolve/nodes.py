@@ -11,7 +11,13 @@ from physai_lint.model.span import Span
 from physai_lint.resolve import names
 from physai_lint.resolve.evaluate import Scope
 from physai_lint.resolve.model import (
-    EffRemap, NodeInstance, ParamSourceR, ResolvedParam, ResolvedParamDict, ResolvedParamFile,
+    EffRemap,
+    NodeInstance,
+    ParamSourceR,
+    ResolvedParam,
+    ResolvedParamDict,
+    ResolvedParamFile,
+    StartEdge,
     UnknownParams,
 )
 from physai_lint.resolve.params import rcl_cli_text, resolve_pvalue
@@ -25,7 +31,7 @@ _NS_OVERRIDE = re.compile(r"^__ns:=(.+)$")
 
 
 class NodeBuilder:
-    def __init__(self, inst: "Instantiator") -> None:
+    def __init__(self, inst: Instantiator) -> None:
         self.inst = inst
         self.count = 0
         self.by_action: dict[str, list[str]] = {}  # "<file>#<action id>" -> node ids
@@ -133,8 +139,6 @@ class NodeBuilder:
             elif m := _NS_OVERRIDE.match(text):
                 ns_raw, ns_given = m.group(1), True
         namespace, ns_specified = self._namespace(ns_raw, ns_given, scope)
-        if name_given and name is not None and "/" in name:
-            pass  # validated (and rejected) by the names rule; keep it for messages
         fqn = names.join_fqn(namespace, name) if (namespace and name) else None
         node_id = self._id()
         remaps, gparams = self._global_sources(scope, node_id)
@@ -232,7 +236,7 @@ class NodeBuilder:
         res = self.inst.result
         for key, after, reason, span, delay in self.pending:
             for before in self.by_action.get(key, []):
-                res.edges.append(_edge(before, after, reason, span, delay))
+                res.edges.append(StartEdge(before, after, reason, span, delay))
         opaque_files = {s.file for s, _ in res.opaque}
         for h, key, file in self.watched:
             assert key is not None
@@ -243,12 +247,6 @@ class NodeBuilder:
                 res.never_started.append((h.span, f"its target action is never added to the launch description ({h.event})"))
             elif seen is False:
                 res.never_started.append((h.span, f"its target action is disabled by its condition ({h.event})"))
-
-
-def _edge(before: str, after: str, reason: str, span: Span, delay: float | None) -> Any:
-    from physai_lint.resolve.model import StartEdge
-
-    return StartEdge(before, after, reason, span, delay)
 
 
 def _cli_typed(rp: ResolvedParam) -> ResolvedParam:

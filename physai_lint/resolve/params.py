@@ -3,7 +3,8 @@
 re-loaded, so it stays a string), substitution values are evaluated and typed by PyYAML."""
 from __future__ import annotations
 
-from typing import Any, Callable
+from collections.abc import Callable
+from typing import Any
 
 from physai_lint.model import values as v
 from physai_lint.resolve.model import ParamValue, ResolvedParam
@@ -21,7 +22,7 @@ def yaml_type(text: str) -> ParamValue:
 
     loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
     try:
-        value = yaml.load(text, Loader=loader)  # noqa: S506 - a safe loader over a short string
+        value = yaml.load(text, Loader=loader)
     except yaml.YAMLError:
         return None
     return _plain(value)

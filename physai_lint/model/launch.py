@@ -297,13 +297,15 @@ class CallFact:
     """A call of a known launch/launch_ros API: its qualified name (``launch_ros.actions.Node``),
     the keyword arguments given (name, span of the keyword) and the number of positional ones.
     ``value_kinds`` maps keyword name to a coarse kind of its value: "list", "dict", "tuple", "str",
-    "number", "bool", "none", "call", "name", "other"."""
+    "number", "bool", "none", "call", "name", "other". ``splat`` is True when the call unpacks
+    ``*args`` or ``**kwargs``: which arguments it passes is then unknown."""
 
     qualname: str
     span: Span
     kwargs: tuple[tuple[str, Span], ...]
     positional: int
     value_kinds: tuple[tuple[str, str], ...] = ()
+    splat: bool = False
 
 
 @dataclass(frozen=True, slots=True)

@@ -91,7 +91,8 @@ def call_facts(nodes: list[ast.AST], spans: SpanMaker, evaluated: dict[tuple[int
             if k in ("name", "call", "other"):
                 k = evaluated.get((id(node), kw.arg), k)
             kinds.append((kw.arg, k))
-        out.append(CallFact(canon, spans.of(node), kwargs, len(node.args), tuple(kinds)))
+        splat = any(kw.arg is None for kw in node.keywords) or any(isinstance(a, ast.Starred) for a in node.args)
+        out.append(CallFact(canon, spans.of(node), kwargs, len(node.args), tuple(kinds), splat))
     out.sort(key=lambda f: (f.span.line, f.span.col))
     return out
 

@@ -6,6 +6,7 @@ from collections.abc import Iterator
 from physai_lint.checks._util import suggestion
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic
+from physai_lint.model.launch import CallFact
 
 _ACTION = frozenset({"condition"})
 _EXEC_PROCESS = frozenset({"cmd", "prefix", "name", "cwd", "env", "additional_env"})
@@ -22,7 +23,7 @@ def _tables(distro: str) -> dict[str, frozenset[str]]:
     local = _EXEC_LOCAL | (_JAZZY_LOCAL if distro != "humble" else frozenset())
     process = _ACTION | _EXEC_PROCESS | local
     node = _ACTION | _NODE_OWN | ((_EXEC_PROCESS - {"cmd", "name"}) | local)
-    a, r = "launch.actions.", "launch_ros.actions."
+    a, r = _A, _R
     return {
         a + "ExecuteProcess": process,
         a + "ExecuteLocal": _ACTION | local | {"process_description"},
@@ -49,6 +50,36 @@ def _tables(distro: str) -> dict[str, frozenset[str]]:
     }
 
 
+_A, _R = "launch.actions.", "launch_ros.actions."
+# Parameters that may be given positionally, in order (the rest are keyword-only), and the
+# parameters without a default; the same in humble, jazzy and rolling (launch f31c1ff1/02595baf,
+# launch_ros 25a207ca/f9ab9371 ``__init__`` signatures).
+_POSITIONAL: dict[str, tuple[str, ...]] = {
+    _A + "IncludeLaunchDescription": ("launch_description_source",),
+    _A + "DeclareLaunchArgument": ("name",),
+    _A + "GroupAction": ("actions",),
+    _A + "RegisterEventHandler": ("event_handler",),
+    _A + "SetLaunchConfiguration": ("name", "value"),
+    _A + "SetEnvironmentVariable": ("name", "value"),
+    _R + "PushRosNamespace": ("namespace",),
+    _R + "SetRemap": ("src", "dst"),
+    _R + "SetParameter": ("name", "value"),
+    _R + "SetParametersFromFile": ("filename",),
+}
+_REQUIRED: dict[str, tuple[str, ...]] = {
+    _A + "ExecuteProcess": ("cmd",),
+    _A + "ExecuteLocal": ("process_description",),
+    _R + "Node": ("executable",),
+    _R + "LifecycleNode": ("name", "namespace", "executable"),
+    _R + "ComposableNodeContainer": ("name", "namespace", "executable"),
+    "launch_ros.descriptions.ComposableNode": ("package", "plugin"),
+    _R + "LoadComposableNodes": ("composable_node_descriptions", "target_container"),
+    _A + "TimerAction": ("period", "actions"),
+    _A + "LogInfo": ("msg",),
+    _A + "OpaqueFunction": ("function",),
+    **_POSITIONAL,
+}
+
 _NODE_LIKE = ("launch_ros.actions.Node", "launch_ros.actions.LifecycleNode",
               "launch_ros.actions.ComposableNodeContainer")
 _DASHING = {
@@ -60,6 +91,36 @@ _WHY = {
     "namespace": "only Node/LifecycleNode/ComposableNodeContainer know namespaces; wrap the action in "
                  "GroupAction([PushRosNamespace(...), ...]) instead",
 }
+
+
+def _signature_problems(call: CallFact, cls: str) -> Iterator[Diagnostic]:
+    """Too many positional arguments, and required arguments given neither way (not for splats)."""
+    if call.splat:
+        return
+    positional = _POSITIONAL.get(call.qualname, ())
+    if call.positional > len(positional):
+        yield Diagnostic(
+            "L001", call.span,
+            f"{cls}() takes {len(positional)} positional argument{'s' if len(positional) != 1 else ''} "
+            f"but {call.positional} {'were' if call.positional != 1 else 'was'} given; building the "
+            'launch description fails with "TypeError: ... positional argument"',
+            help=(f"pass them by keyword: {', '.join(f'{p}=...' for p in _REQUIRED.get(call.qualname, ()))}"
+                  if not positional else f"only {', '.join(positional)} may be positional; pass the "
+                  "rest by keyword"),
+            key=f"{cls}:positional")
+        return
+    given = set(positional[:call.positional]) | {kw for kw, _ in call.kwargs}
+    aliases = _DASHING_COMPONENT if cls == "ComposableNode" else _DASHING if call.qualname in _NODE_LIKE else {}
+    given |= {aliases[kw] for kw in given if kw in aliases}  # reported as a rename instead
+    missing = [p for p in _REQUIRED.get(call.qualname, ()) if p not in given]
+    if missing:
+        listed = ", ".join(f'"{m}"' for m in missing)
+        yield Diagnostic(
+            "L001", call.span,
+            f"{cls}() is missing the required argument{'s' if len(missing) > 1 else ''} {listed}; "
+            f"building the launch description fails with \"TypeError: ... missing {len(missing)} required "
+            f"argument{'s' if len(missing) > 1 else ''}\"",
+            help="add " + ", ".join(f"{m}=..." for m in missing), key=f"{cls}:missing:{','.join(missing)}")
 
 
 @rule("L001", "unknown-keyword-argument")
@@ -75,6 +136,7 @@ def unknown_keyword_argument(ctx: CheckContext) -> Iterator[Diagnostic]:
             if allowed is None:
                 continue
             cls = call.qualname.rsplit(".", 1)[-1]
+            yield from _signature_problems(call, cls)
             for kw, span in call.kwargs:
                 if kw in allowed:
                     continue

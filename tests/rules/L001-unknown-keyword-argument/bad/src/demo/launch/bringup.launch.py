@@ -1,6 +1,6 @@
 from launch import LaunchDescription
-from launch.actions import ExecuteProcess
-from launch_ros.actions import Node
+from launch.actions import DeclareLaunchArgument, ExecuteProcess
+from launch_ros.actions import LifecycleNode, Node
 
 
 def generate_launch_description():
@@ -12,4 +12,7 @@ def generate_launch_description():
             paramters=[{'rate': 2.0}],
         ),
         ExecuteProcess(cmd=['ros2', 'bag', 'record', '-a'], namespace='robot1'),
+        LifecycleNode(package='nav2_map_server', executable='map_server', name='map_server'),
+        DeclareLaunchArgument(default_value='map.yaml', description='map file'),
+        Node('demo_nodes_cpp', 'listener'),
     ])

@@ -7,8 +7,9 @@ storage; rules use the typed queries below and never read networkx dicts.
 """
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any, Iterable, Literal
+from typing import TYPE_CHECKING, Any, Literal
 
 from physai_lint.resolve.model import EffRemap, LaunchResult, NodeInstance
 from physai_lint.resolve.names import expand_topic_name
@@ -118,7 +119,7 @@ def build_graph(launch: LaunchResult, interfaces: Any, include_inactive: bool = 
 
 def to_networkx(g: SystemGraph) -> Any:
     """A networkx DiGraph: ``n:<id>`` node vertices, ``t:<name>`` topic vertices (pub n->t, sub t->n)."""
-    import networkx as nx
+    import networkx as nx  # type: ignore[import-untyped]
 
     dg = nx.DiGraph()
     for n in g.launch.nodes:
@@ -146,5 +147,5 @@ def similar(name: str, candidates: Iterable[str], cutoff: float = 0.6) -> list[s
     return (close + by_base)[:3]
 
 
-def span_for(node: NodeInstance, field_name: str) -> "Span":
+def span_for(node: NodeInstance, field_name: str) -> Span:
     return node.spans.get(field_name, node.span)

@@ -2,17 +2,28 @@
 
 Conservative by design: a condition is reported only when every input is known (literals, and
 launch arguments whose ``choices`` bound their values, never changed by ``SetLaunchConfiguration``
-/ ``<let>`` / group-local configurations anywhere in the checked files).
+/ ``<let>`` / group-local configurations anywhere in the checked files). ``PythonExpression`` /
+``$(eval)`` are evaluated by ``resolve/safe_eval.py`` for every combination of those choices.
 """
 from __future__ import annotations
 
+import itertools
 from collections.abc import Iterator
 from typing import Any
 
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model import launch as ir
 from physai_lint.model.findings import Diagnostic
-from physai_lint.model.values import Compare, LaunchConfig, Text, literal_of
+from physai_lint.model.values import (
+    BoolOp,
+    Compare,
+    IfElse,
+    LaunchConfig,
+    PythonExpr,
+    Text,
+    literal_of,
+)
+from physai_lint.resolve.evaluate import Evaluator, Scope
 
 _TRUE = {"true", "1"}
 _FALSE = {"false", "0"}
@@ -90,6 +101,71 @@ def _compare_dead(cond: ir.Condition, choices: dict[str, tuple[str, ...]],
             f"({listed}), so the condition is never true")
 
 
+_MAX_COMBINATIONS = 512
+_COMPUTED = (PythonExpr, BoolOp, Compare, IfElse)
+
+
+def _parts(value: Any) -> Iterator[Any]:
+    """Every substitution inside a value, nested ones included."""
+    for part in value or ():
+        yield part
+        for attr in ("name", "default", "expression", "operands", "left", "right", "condition",
+                     "if_value", "else_value", "parts", "command", "package", "path", "executable"):
+            sub = getattr(part, attr, None)
+            if isinstance(sub, tuple) and sub and isinstance(sub[0], tuple):
+                for item in sub:
+                    yield from _parts(item)
+            elif isinstance(sub, tuple):
+                yield from _parts(sub)
+
+
+def _computed_dead(cond: ir.Condition, choices: dict[str, tuple[str, ...]],
+                   set_names: set[str]) -> str | None:
+    """A PythonExpression / $(eval) / boolean / comparison condition that is false for every
+    combination of the declared choices of the launch arguments it reads (safe evaluator only)."""
+    parts = list(_parts(cond.value))
+    if not any(isinstance(p, _COMPUTED) for p in parts):
+        return None
+    names: list[str] = []
+    for p in parts:
+        if isinstance(p, LaunchConfig):
+            name = literal_of(p.name)
+            if name is None or name in set_names or name not in choices:
+                return None
+            if name not in names:
+                names.append(name)
+    combos = list(itertools.islice(itertools.product(*(choices[n] for n in names)), _MAX_COMBINATIONS + 1))
+    if len(combos) > _MAX_COMBINATIONS:
+        return None
+    evaluator = Evaluator(None)
+    for combo in combos:
+        if evaluator.condition(cond.kind, cond.value, Scope(configs=dict(zip(names, combo)))) is not False:
+            return None
+    expr = "".join(_show(p) for p in cond.value)
+    if not names:
+        result = evaluator.eval(cond.value, Scope())
+        return f'"{expr}" always evaluates to "{result}"'
+    tried = "; ".join(f'"{n}" in ' + ", ".join(f'"{c}"' for c in choices[n]) for n in names)
+    return (f'"{expr}" is {"false" if cond.kind == "if" else "true"} for every declared choice of '
+            f"the launch arguments it reads ({tried})")
+
+
+def _show(part: Any) -> str:
+    """A substitution as XML spells it, for messages."""
+    if isinstance(part, Text):
+        return part.text
+    if isinstance(part, LaunchConfig):
+        return f"$(var {literal_of(part.name)})"
+    if isinstance(part, PythonExpr):
+        return "$(eval " + "".join(_show(p) for p in part.expression) + ")"
+    if isinstance(part, Compare):
+        left, right = "".join(_show(p) for p in part.left), "".join(_show(p) for p in part.right)
+        return f"$({part.op} {left} {right})"
+    if isinstance(part, BoolOp):
+        return f"$({part.op} " + " ".join("".join(_show(p) for p in o) for o in part.operands) + ")"
+    return "$(...)"
+
+
 def _literal_dead(cond: ir.Condition) -> str | None:
     if not cond.value or not all(isinstance(p, Text) for p in cond.value):
         return None
@@ -131,7 +207,8 @@ def condition_never_true(ctx: CheckContext) -> Iterator[Diagnostic]:
             for cond in conds:
                 if not isinstance(cond, ir.Condition):
                     continue
-                why = _literal_dead(cond) or _compare_dead(cond, choices, set_names or set())
+                why = (_literal_dead(cond) or _compare_dead(cond, choices, set_names or set())
+                       or (_computed_dead(cond, choices, set_names) if set_names is not None else None))
                 if why:
                     found.append((cond, why))
         if set_names is not None:

@@ -1,7 +1,7 @@
 from launch import LaunchDescription
-from launch.actions import DeclareLaunchArgument, GroupAction
+from launch.actions import DeclareLaunchArgument, GroupAction, IncludeLaunchDescription
 from launch.conditions import IfCondition, LaunchConfigurationEquals, UnlessCondition
-from launch.substitutions import LaunchConfiguration
+from launch.substitutions import LaunchConfiguration, PathJoinSubstitution, PythonExpression, ThisLaunchFileDir
 from launch_ros.actions import Node
 
 
@@ -16,4 +16,9 @@ def generate_launch_description():
             Node(package='demo_nodes_cpp', executable='listener', name='listener',
                  condition=UnlessCondition(LaunchConfiguration('use_sim'))),
         ]),
+        Node(package='demo_nodes_cpp', executable='talker', name='map_saver',
+             condition=IfCondition(PythonExpression(
+                 ["'", LaunchConfiguration('mode'), "' == 'maping'"]))),
+        IncludeLaunchDescription(PathJoinSubstitution([ThisLaunchFileDir(), 'viewer.launch.xml'])),
+        IncludeLaunchDescription(PathJoinSubstitution([ThisLaunchFileDir(), 'tools.launch.yaml'])),
     ])

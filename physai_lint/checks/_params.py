@@ -1,6 +1,7 @@
 """Effective parameters per node, computed once per run and shared by the parameter rules."""
 from __future__ import annotations
 
+import os
 from typing import Any
 
 from physai_lint.checks._util import all_nodes
@@ -29,3 +30,19 @@ def nodes_with_params(ctx: CheckContext) -> Any:
     for launch, node in all_nodes(ctx, include_inactive=False):
         if node.kind != "process":
             yield launch, node
+
+
+def decl_source(source: str) -> str:
+    """A declaration's source for messages: workspace paths relative to the working directory."""
+    out = []
+    for part in source.split(" + "):
+        head, sep, tail = part.rpartition(" ")
+        path = tail if tail.startswith("/") else part
+        if path.startswith("/"):
+            try:
+                rel = os.path.relpath(path).replace(os.sep, "/")
+            except ValueError:
+                rel = path
+            part = (head + sep if tail.startswith("/") else "") + rel
+        out.append(part)
+    return " + ".join(out)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from typing import Any, Iterator
 
+from physai_lint.checks._params import decl_source as _source
 from physai_lint.checks._params import effective, interface, nodes_with_params
 from physai_lint.checks._util import did_you_mean
 from physai_lint.checks.base import CheckContext, rule
@@ -20,24 +21,6 @@ def _fmt(value: Any) -> str:
 
 def _article(word: str | None) -> str:
     return "an" if (word or "x")[0] in "aeiou" else "a"
-
-
-def _source(source: str) -> str:
-    """A declaration's source for messages: workspace paths relative to the working directory."""
-    import os
-
-    out = []
-    for part in source.split(" + "):
-        head, sep, tail = part.rpartition(" ")
-        path = tail if tail.startswith("/") else part
-        if path.startswith("/"):
-            try:
-                rel = os.path.relpath(path).replace(os.sep, "/")
-            except ValueError:
-                rel = path
-            part = (head + sep if tail.startswith("/") else "") + rel
-        out.append(part)
-    return " + ".join(out)
 
 
 def _declared(ctx: CheckContext) -> Iterator[tuple[Any, Any, Any, Any]]:

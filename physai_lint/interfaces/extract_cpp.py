@@ -393,9 +393,33 @@ def _span(path: str, t: Tok | None) -> Span | None:
     return Span(path, t.line, t.col, t.end_line, t.end_col)
 
 
+def _read_only_descriptors(toks: list[Tok]) -> set[str]:
+    """Variables given ``NAME.read_only = true`` (or ``->``) in the file."""
+    out: set[str] = set()
+    for j in range(2, len(toks) - 2):
+        if toks[j].text == "read_only" and toks[j - 1].text in (".", "->") and \
+                toks[j + 1].text == "=" and toks[j + 2].text == "true" and toks[j - 2].kind == "id":
+            out.add(toks[j - 2].text)
+    return out
+
+
+def _descriptor_read_only(arg: list[Tok], names: set[str]) -> bool:
+    """A descriptor argument that makes the parameter read-only: a variable set read-only above,
+    ``...set__read_only(true)`` or a brace initialiser with ``.read_only = true``."""
+    if len(arg) == 1 and arg[0].kind == "id":
+        return arg[0].text in names
+    for j in range(len(arg) - 2):
+        if arg[j].text == "set__read_only" and arg[j + 1].text == "(" and arg[j + 2].text == "true":
+            return True
+        if arg[j].text == "read_only" and arg[j + 1].text == "=" and arg[j + 2].text == "true":
+            return True
+    return False
+
+
 def _extract_one(path: str, text: str, iface: NodeInterface) -> None:
     toks = tokenize(text)
     consts = _constants(toks)
+    read_only = _read_only_descriptors(toks)
     for i, t in enumerate(toks):
         if t.kind != "id":
             continue
@@ -468,4 +492,6 @@ def _extract_one(path: str, text: str, iface: NodeInterface) -> None:
                     ptype = dtype
             decl = ParamDecl(n, ptype, default, span=_span(path, tok), source=path,
                              has_default=has_default)
-            iface.parameters.setdefault(n, decl)  # type: ignore[union-attr]
+            decl = iface.parameters.setdefault(n, decl)  # type: ignore[union-attr]
+            if len(args) > k + 2 and _descriptor_read_only(args[k + 2], read_only):
+                decl.read_only = True

@@ -157,9 +157,38 @@ def extract_py(files: list[tuple[str, str]]) -> NodeInterface:
     return iface
 
 
+def _is_true(node: ast.AST | None) -> bool:
+    return isinstance(node, ast.Constant) and node.value is True
+
+
+def _read_only_descriptors(tree: ast.Module) -> set[str]:
+    """Names bound to a ``ParameterDescriptor(read_only=True)`` or given ``.read_only = True``."""
+    out: set[str] = set()
+    for node in ast.walk(tree):
+        if not isinstance(node, ast.Assign):
+            continue
+        for t in node.targets:
+            if isinstance(t, ast.Name) and _descriptor_read_only(node.value, set()):
+                out.add(t.id)
+            elif isinstance(t, ast.Attribute) and t.attr == "read_only" and _is_true(node.value):
+                name = _dotted(t.value)
+                if name:
+                    out.add(name)
+    return out
+
+
+def _descriptor_read_only(node: ast.AST | None, names: set[str]) -> bool:
+    """A descriptor argument that makes the parameter read-only."""
+    if isinstance(node, ast.Call) and (_dotted(node.func) or "").endswith("ParameterDescriptor"):
+        return any(k.arg == "read_only" and _is_true(k.value) for k in node.keywords)
+    name = _dotted(node) if node is not None else None
+    return name is not None and name in names
+
+
 def _extract_one(path: str, tree: ast.Module, iface: NodeInterface) -> None:
     imports = _imports(tree)
     consts = _const_strings(tree)
+    read_only = _read_only_descriptors(tree)
     params = iface.parameters
     assert params is not None
     for node in ast.walk(tree):
@@ -185,8 +214,10 @@ def _extract_one(path: str, tree: ast.Module, iface: NodeInterface) -> None:
             name = _str_of(name_node, consts)
             if name is None or name_node is None:
                 continue
-            params.setdefault(name, _param_from(name, _arg(node, 1, "value"), path,
-                                                _span(path, name_node)))
+            decl = params.setdefault(name, _param_from(name, _arg(node, 1, "value"), path,
+                                                       _span(path, name_node)))
+            if _descriptor_read_only(_arg(node, 2, "descriptor"), read_only):
+                decl.read_only = True
         elif fname == "declare_parameters" and isinstance(fn, ast.Attribute):
             ns = _str_of(_arg(node, 0, "namespace"), consts) or ""
             plist = _arg(node, 1, "parameters")
@@ -200,5 +231,7 @@ def _extract_one(path: str, tree: ast.Module, iface: NodeInterface) -> None:
                     continue
                 full = f"{ns}.{pname}" if ns else pname
                 value_node = item.elts[1] if len(item.elts) > 1 else None
-                params.setdefault(full, _param_from(full, value_node, path,
-                                                    _span(path, item.elts[0])))
+                decl = params.setdefault(full, _param_from(full, value_node, path,
+                                                           _span(path, item.elts[0])))
+                if len(item.elts) > 2 and _descriptor_read_only(item.elts[2], read_only):
+                    decl.read_only = True

@@ -39,6 +39,8 @@ class BuildInfo:
     rules: list[InstallRule] = field(default_factory=list)
     # executable or plugin -> parameter YAML files (absolute paths)
     parameter_yamls: dict[str, list[str]] = field(default_factory=dict)
+    # executable or plugin -> its source files (absolute paths), for parameter extraction
+    sources: dict[str, list[str]] = field(default_factory=dict)
     # generate_parameter_module: (module name, yaml absolute path)
     parameter_modules: list[tuple[str, str]] = field(default_factory=list)
     python_packages: set[str] = field(default_factory=set)

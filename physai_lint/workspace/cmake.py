@@ -43,6 +43,7 @@ class _Interp:
         self.auto_exes: set[str] = set()
         self.links: dict[str, set[str]] = {}
         self.param_libs: dict[str, str | None] = {}
+        self.target_sources: dict[str, list[str]] = {}
         self.plugin_targets: dict[str, str] = {}
         self.subdirs = 0
         self.auto_package = False
@@ -174,12 +175,16 @@ class _Interp:
             a = self.args(cmd)
             if a and "IMPORTED" not in a and "ALIAS" not in a:
                 self.exes.add(a[0])
+                self.record_sources(a)
                 if name == "ament_auto_add_executable":
                     self.auto_exes.add(a[0])
         elif name in ("add_library", "ament_auto_add_library"):
             a = self.args(cmd)
             if a:
                 self.libs.add(a[0])
+                self.record_sources(a)
+        elif name == "target_sources":
+            self.record_sources(self.args(cmd))
         elif name == "target_link_libraries":
             a = self.args(cmd)
             if a:
@@ -360,6 +365,16 @@ class _Interp:
                               files_matching=files_matching, patterns=tuple(patterns),
                               excludes=tuple(excludes))
 
+    def record_sources(self, a: list[str]) -> None:
+        """C/C++ sources named in ``add_executable``/``add_library``/``target_sources``."""
+        out = self.target_sources.setdefault(a[0], [])
+        for x in a[1:]:
+            for item in x.split(";"):
+                if item.endswith((".cpp", ".cc", ".cxx", ".c++", ".hpp", ".h", ".hh")):
+                    p = self.src_path(item)
+                    if p and p not in out:
+                        out.append(p)
+
     def finish(self) -> None:
         if self.auto_package:
             self.info.executables.update(self.auto_exes)
@@ -380,6 +395,27 @@ class _Interp:
                 stack.extend(sorted(self.links.get(t, ())))
             return sorted(set(out))
 
+        def sources(target: str) -> list[str]:
+            out: list[str] = []
+            seen: set[str] = set()
+            stack = [target]
+            while stack:
+                t = stack.pop()
+                if t in seen:
+                    continue
+                seen.add(t)
+                out.extend(p for p in self.target_sources.get(t, ()) if p not in out)
+                stack.extend(sorted(x for x in self.links.get(t, ()) if x in self.libs))
+            return out
+
+        for exe in sorted(self.exes | self.info.executables):
+            srcs = sources(exe)
+            if srcs:
+                self.info.sources[exe] = srcs
+        for plugin, target in sorted(self.plugin_targets.items()):
+            srcs = sources(target)
+            if srcs:
+                self.info.sources[plugin] = srcs
         for exe in sorted(self.exes | self.info.executables):
             ys = reach(exe)
             if ys:

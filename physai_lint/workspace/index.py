@@ -54,6 +54,7 @@ class WorkspacePackage:
     registers_in_index: bool = True
     valid: bool = True  # False when catkin_pkg rejected package.xml
     dirs: frozenset[str] = field(default_factory=frozenset)
+    sources: dict[str, tuple[str, ...]] = field(default_factory=dict)  # executable -> sources
 
 
 def _norm(path: str) -> str:
@@ -166,6 +167,13 @@ class PackageIndex:
         if pkg is None:
             return []
         return list(pkg.parameter_yamls.get(executable, ()))
+
+    def source_files_for(self, package: str, executable: str) -> list[str]:
+        """The workspace source files an executable (or component plugin) is built from."""
+        pkg = self.packages.get(package)
+        if pkg is None:
+            return []
+        return list(pkg.sources.get(executable, ()))
 
     # ---- install space -------------------------------------------------------------------------
 
@@ -521,6 +529,7 @@ def _read_package(index: PackageIndex, pkg_dir: str) -> WorkspacePackage | None:
         install_rules=tuple(info.rules),
         parameter_yamls={k: tuple(v) for k, v in sorted(info.parameter_yamls.items())},
         parameter_modules=tuple(info.parameter_modules),
+        sources={k: tuple(v) for k, v in sorted(info.sources.items())},
         files=files,
         dirs=dirs,
         install_complete=info.complete,

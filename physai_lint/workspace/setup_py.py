@@ -364,6 +364,7 @@ def read_setup_py(pkg_dir: str, pkg_name: str, files: frozenset[str], text: str 
             rel = mod.replace(".", "/") + "/__init__.py"
             mod_path = pkg_dir + "/" + rel
         if rel in files:
+            info.sources[exe] = [mod_path]
             try:
                 with open(mod_path, encoding="utf-8", errors="replace") as fh:
                     text_mod = fh.read(2_000_000)

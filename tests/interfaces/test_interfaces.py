@@ -232,3 +232,27 @@ def test_bundled_coverage():
 def test_validate_plain_ranges():
     d = ParamDecl("x", "double", min=0.0, max=1.0, choices=None)
     assert validate(d, 2.0) and not validate(d, 0.5) and validate(d, None) == []
+
+
+def test_read_only_descriptors_are_extracted() -> None:
+    from physai_lint.interfaces.extract_cpp import extract_cpp
+    from physai_lint.interfaces.extract_py import extract_py
+
+    cpp = extract_cpp([("/w/n.cpp", """
+rcl_interfaces::msg::ParameterDescriptor desc;
+desc.read_only = true;
+declare_parameter("frame_id", std::string("base"), desc);
+declare_parameter("rate", 10.0);
+node->declare_parameter("port", 1, rcl_interfaces::msg::ParameterDescriptor{}.set__read_only(true));
+""")])
+    assert {k: v.read_only for k, v in (cpp.parameters or {}).items()} == {
+        "frame_id": True, "rate": False, "port": True}
+    py = extract_py([("/w/n.py", """
+from rcl_interfaces.msg import ParameterDescriptor
+d = ParameterDescriptor(read_only=True)
+node.declare_parameter('frame_id', 'base', d)
+node.declare_parameter('port', 1, descriptor=ParameterDescriptor(read_only=True))
+node.declare_parameter('rate', 10.0, ParameterDescriptor(description='hz'))
+""")])
+    assert {k: v.read_only for k, v in (py.parameters or {}).items()} == {
+        "frame_id": True, "port": True, "rate": False}

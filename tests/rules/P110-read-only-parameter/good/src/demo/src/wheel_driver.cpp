@@ -1,0 +1,9 @@
+#include "rclcpp/rclcpp.hpp"
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<rclcpp::Node>("wheel_driver"));
+  rclcpp::shutdown();
+  return 0;
+}

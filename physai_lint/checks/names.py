@@ -2,10 +2,12 @@
 N104 invalid-topic-name, N105 invalid-remap-name, N106 name-style, N107 duplicate-component-name."""
 from __future__ import annotations
 
-from typing import Iterator
+import re
+from collections.abc import Iterator
 
 from physai_lint.checks._util import all_nodes
 from physai_lint.checks.base import CheckContext, rule
+from physai_lint.checks.topics import graphs
 from physai_lint.model.findings import Diagnostic, Related
 from physai_lint.resolve import names
 
@@ -153,3 +155,69 @@ def name_style(ctx: CheckContext) -> Iterator[Diagnostic]:
                                  f'{what} "{value}" uses "__" or a trailing "_" (allowed, but the ROS 2 '
                                  "naming design reserves them)",
                                  help="use single underscores between words", key=value)
+
+
+_KNOWN_SUBST = ("node", "ns", "namespace")
+_SUBSTITUTION = re.compile(r"\{([^{}]*)\}")
+_EP_ATTR = {"publisher": "publishers", "subscriber": "subscribers", "service": "services",
+            "client": "clients", "action_server": "action_servers", "action_client": "action_clients"}
+_EP_WORD = {"publisher": "publishes", "subscriber": "subscribes to", "service": "serves",
+            "client": "calls the service", "action_server": "serves the action",
+            "action_client": "calls the action"}
+
+
+def _written_problem(name: str) -> str | None:
+    """rcl_validate_topic_name, then rcl_expand_topic_name's unknown-substitution error."""
+    reason = names.validate_topic_name(name)
+    if reason:
+        return reason
+    for sub in _SUBSTITUTION.findall(name):
+        if sub not in _KNOWN_SUBST:
+            return f'unknown substitution "{{{sub}}}" (only {{node}}, {{ns}} and {{namespace}} exist)'
+    return None
+
+
+def _final_problem(name: str) -> str | None:
+    """rmw_validate_full_topic_name on the expanded, remapped name (length included)."""
+    reason = names.validate_full_topic_name(name)
+    if reason:
+        return reason
+    if len(name) > names.TOPIC_MAX:
+        return f"it is {len(name)} characters long (at most {names.TOPIC_MAX})"
+    return None
+
+
+@rule("N104", "invalid-topic-name")
+def invalid_topic_name(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for g in graphs(ctx):
+        for e in g.endpoints:
+            node = g.node(e.node)
+            reason = _written_problem(e.written)
+            written_bad = reason is not None
+            shown = f'"{e.written}"'
+            if reason is None and e.resolved is not None:
+                if e.remap is not None and _remap_problem(node.remaps[e.remap].dst or "") is not None:
+                    continue  # the remap's replacement is invalid itself: N105 reports it
+                reason = _final_problem(e.resolved)
+                if reason and e.resolved != e.written:
+                    how = "expanded" if e.remap is None else "expanded and remapped"
+                    shown = f'"{e.written}" ({how} to "{e.resolved}")'
+            if reason is None or (node.span, e.kind, e.written) in seen:
+                continue
+            seen.add((node.span, e.kind, e.written))
+            related: tuple[Related, ...] = ()
+            iface = ctx.interfaces.get(node.package, node.executable)
+            for ep in (getattr(iface, _EP_ATTR[e.kind], None) or ()) if iface is not None else ():
+                if ep.name == e.written and ep.span is not None:
+                    related = (Related(ep.span, "the name is written here"),)
+                    break
+            yield Diagnostic(
+                "N104", node.span,
+                f"{node.fqn or node.executable} {_EP_WORD[e.kind]} {shown}, which is not a valid name: "
+                f"{reason}",
+                help=('topic and service names use letters, digits, "_" and "/", may start with "~/" and '
+                      "use {node}/{ns}; no token may start with a digit. Rename it in the node's code "
+                      "(rcl checks the name as written before it applies remap rules)") if written_bad else
+                     "shorten the namespace or remap the name to a valid one",
+                related=related, key=f"{e.kind}:{e.written}")

@@ -20,7 +20,6 @@ NON_CHECK_PRODUCERS = ("frontends", "engine")
 # Catalogued but not built yet, with nobody on them: strict xfail, so the line must go when they land.
 PENDING = {
     "P112": "no @rule('P112') yet (ambiguous-parameter-typing)",
-    "T104": "no @rule('T104') yet (remap-wrong-side)",
     "X002": "no frontend/engine test names X002 (unreadable-file) yet",
 }
 

@@ -3,12 +3,13 @@ T103 set-remap-no-effect, T104 remap-wrong-side, T201 subscription-without-publi
 T202 publication-without-subscriber, T203 topic-type-mismatch, T204 duplicate-service-server."""
 from __future__ import annotations
 
-from typing import Iterator
+from collections.abc import Iterator
 
 from physai_lint.checks._util import all_nodes
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.graph.system import SystemGraph, build_graph, remap_target, similar
 from physai_lint.model.findings import Diagnostic, Related
+from physai_lint.resolve.model import NodeInstance
 
 _CACHE_KEY = "_graphs"
 
@@ -42,8 +43,7 @@ def unused_remap(ctx: CheckContext) -> Iterator[Diagnostic]:
         for node in g.launch.nodes:
             if node.id not in g.known or node.active is False:
                 continue
-            iface = ctx.interfaces.get(node.package, node.executable)
-            if iface is None or str(getattr(iface, "source", "")).startswith("bundled"):
+            if not _trusted(ctx, node):
                 continue  # bundled declarations may omit optional topics: only trust declared ones
             eps = g.endpoints_of(node.id)
             if any(e.expanded is None for e in eps):
@@ -58,6 +58,8 @@ def unused_remap(ctx: CheckContext) -> Iterator[Diagnostic]:
                     continue
                 if any(e.expanded == src for e in eps):
                     continue  # shadowed by an earlier rule: not "no effect" for this rule's purpose
+                if wrong_side(g, node, i, True) is not None:
+                    continue  # T104 explains this one better
                 seen.add(r.span)
                 names = sorted({e.expanded for e in eps if e.expanded})
                 relative = [n for n in names if n.rsplit("/", 1)[-1] == src.rsplit("/", 1)[-1]]
@@ -74,6 +76,59 @@ def unused_remap(ctx: CheckContext) -> Iterator[Diagnostic]:
                     f'(it would match "{src}"){detail}',
                     help="remap a name the node actually uses (relative names resolve against the "
                          "node's namespace)",
+                    key=f"{node.fqn}:{r.src}")
+
+
+def _trusted(ctx: CheckContext, node: NodeInstance) -> bool:
+    """Bundled declarations may omit optional topics: only workspace/declared interfaces are complete."""
+    iface = ctx.interfaces.get(node.package, node.executable)
+    return iface is not None and not str(getattr(iface, "source", "")).startswith("bundled")
+
+
+def wrong_side(g: SystemGraph, node: NodeInstance, index: int, trusted: bool) -> tuple[str, str] | None:
+    """(expanded from, expanded to) when rule ``index`` is written backwards: its match is none of the
+    node's names but its replacement is one, and (unless the interface is trusted to be complete) the
+    match is a name another node uses."""
+    r = node.remaps[index]
+    if r.origin != "node" or r.src is None or r.dst is None or r.src.startswith("__"):
+        return None
+    eps = g.endpoints_of(node.id)
+    if not eps or any(e.expanded is None for e in eps) or g.remap_used(node.id, index):
+        return None
+    src, dst = remap_target(r, node)
+    if src is None or dst is None or src == dst:
+        return None
+    own = {e.expanded for e in eps}
+    if src in own or dst not in own:
+        return None
+    if not trusted and not any(e.node != node.id and src in (e.resolved, e.expanded) for e in g.endpoints):
+        return None
+    return src, dst
+
+
+@rule("T104", "remap-wrong-side")
+def remap_wrong_side(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for g in graphs(ctx):
+        for node in g.launch.nodes:
+            if node.id not in g.known or node.active is False:
+                continue
+            trusted = _trusted(ctx, node)
+            for i, r in enumerate(node.remaps):
+                found = wrong_side(g, node, i, trusted)
+                if found is None or r.span in seen:
+                    continue
+                seen.add(r.span)
+                src, dst = found
+                others = sorted({g.node(e.node).fqn or "" for e in g.endpoints
+                                 if e.node != node.id and src in (e.resolved, e.expanded)} - {""})
+                other = f'; "{src}" is what {", ".join(others[:3])} use' if others else ""
+                yield Diagnostic(
+                    "T104", r.span,
+                    f'remap "{r.src}" -> "{r.dst}" on {node.fqn or node.executable} looks written backwards: '
+                    f'the node uses "{dst}" (the replacement) and no name matching "{src}"{other}, so '
+                    "the rule has no effect",
+                    help=f'swap the sides: "{r.dst}" -> "{r.src}" (a rule is name_in_the_node:=new_name)',
                     key=f"{node.fqn}:{r.src}")
 
 
@@ -105,7 +160,7 @@ def _dangling(ctx: CheckContext, mine: str, other: str, code: str) -> Iterator[D
     for g in graphs(ctx):
         if g.has_unknown_endpoints():
             continue  # some node's topics are unknown: it might be the missing end
-        others = {e.resolved for e in g.of_kind(other)}  # type: ignore[arg-type]
+        others = {e.resolved for e in g.of_kind(other) if e.resolved}  # type: ignore[arg-type]
         for e in g.of_kind(mine):  # type: ignore[arg-type]
             if e.resolved is None or e.resolved in others or e.resolved.split("/")[-1].startswith("_"):
                 continue
@@ -162,7 +217,7 @@ def duplicate_service(ctx: CheckContext) -> Iterator[Diagnostic]:
     for g in graphs(ctx):
         for kind in ("service", "action_server"):
             first: dict[str, str] = {}
-            for e in g.of_kind(kind):  # type: ignore[arg-type]
+            for e in g.of_kind(kind):
                 if e.resolved is None:
                     continue
                 if e.resolved not in first:

@@ -1,0 +1,182 @@
+"""P112 ambiguous-parameter-typing: a value the node receives with a different type or value than
+it was written with (ECOSYSTEM.md §4, SEMANTICS.md §4a/§4b).
+
+The check looks at the value each node finally gets (the effective parameter, typed the way rcl or
+launch_ros types it for that node) and at the text it came from, and reports only the traps:
+
+- a leading-zero number (``017`` is octal 15 for rcl, ``0483`` the double 483.0);
+- ``y``/``n`` read as booleans;
+- ``1_000`` left a string by rcl; ``~``/``null`` left the string "null" by rcl;
+- a number-looking text that stays a string (``1e3``, ``.5`` read by PyYAML for a composable node);
+- a Python string in a launch dict that rcl re-types when launch_ros writes it to its temporary
+  params file (``'0483'`` -> 483.0, ``'y'`` -> true).
+
+Quoted YAML scalars are what the author asked for and are never reported. When the declared type
+says the received type is wrong, P105 reports it instead; when the declaration accepts the value
+as received (``0483`` for a double), nothing is reported.
+"""
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Iterator
+from typing import Any
+
+from physai_lint.checks._params import effective, interface, nodes_with_params
+from physai_lint.checks.base import CheckContext, rule
+from physai_lint.model.findings import Diagnostic
+from physai_lint.model.span import Span
+from physai_lint.params.typing import rcl_type_scalar
+from physai_lint.resolve.model import NodeInstance, ResolvedParam, ResolvedParamDict
+
+_LEADING_ZERO = re.compile(r"[+-]?0[0-9]+")
+_UNDERSCORE_NUMBER = re.compile(r"[+-]?[0-9][0-9_]*_[0-9_]*(\.[0-9_]*)?")
+_LETTER_BOOLS = frozenset({"y", "Y", "n", "N"})
+_NULLS = frozenset({"~", "null", "Null", "NULL"})
+
+
+def _fmt(value: Any) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, str):
+        return f'the string "{value}"'
+    return repr(value)
+
+
+def _kind_name(kind: str | None) -> str:
+    return {"integer": "an integer", "double": "a double", "bool": "a bool",
+            "string": "a string"}.get(kind or "", kind or "?")
+
+
+def _written(ctx: CheckContext, node: NodeInstance) -> dict[Span, tuple[str, bool, str]]:
+    """value span -> (text as written, quoted/string literal, where) for the node's sources."""
+    out: dict[Span, tuple[str, bool, str]] = {}
+    for src in node.param_sources:
+        if isinstance(src, ResolvedParamDict):
+            for prm in src.params:
+                _add_launch_param(out, prm)
+    for model in ctx.param_files.values():
+        for block in model.blocks:
+            for fp in block.params:
+                if not isinstance(fp.value, list):
+                    out.setdefault(fp.value_span, (fp.raw, fp.quoted, "file"))
+    return out
+
+
+def _add_launch_param(out: dict[Span, tuple[str, bool, str]], prm: ResolvedParam) -> None:
+    if prm.typed_by == "yaml" and prm.raw is not None:
+        out[prm.span] = (prm.raw.strip(), False, "launch")
+    elif prm.typed_by == "python" and isinstance(prm.value, str):
+        out[prm.span] = (prm.value, True, "python")
+
+
+def _problem(text: str, quoted: bool, origin: str, kind: str | None, value: Any,
+             decl_type: str | None) -> tuple[str, str] | None:
+    """(what happened, what to write instead) when the received value is a trap. A declared type
+    that the received value does not have is P105's; only an octal integer for a declared integer
+    is reported here, because the type is right and the number is not."""
+    if quoted and origin != "python":
+        return None
+    if _LEADING_ZERO.fullmatch(text) and decl_type in (None, "integer") and kind == "integer":
+        decimal = int(text, 10)
+        if value == decimal:
+            return None
+        return (f'rcl reads "{text}" as an octal integer: the node gets {value}, not {decimal}',
+                f'write {decimal} for the number, or "{text}" (quoted) for a string')
+    if decl_type is not None or kind is None:
+        return None
+    if origin == "python":
+        # the author wrote a Python str; rcl re-typed the text launch_ros dumped for it
+        if kind == "string":
+            return None
+        return ((f"the Python string '{text}' reaches the node as {_fmt(value)}: launch_ros "
+                 f"writes it unquoted to its temporary params file and rcl reads it as "
+                 f"{_kind_name(kind)}"),
+                ("give the value the type you mean; a string of digits needs a declared string "
+                 f'parameter or a params file with "{text}" quoted'))
+    return _plain_problem(text, kind, value)
+
+
+def _plain_problem(text: str, kind: str, value: Any) -> tuple[str, str] | None:
+    if _LEADING_ZERO.fullmatch(text):
+        decimal = int(text, 10)
+        if kind == "double":
+            return ((f'rcl reads "{text}" as the double {value} (an 8 or 9 makes it no valid '
+                     "octal integer)"),
+                    f'write "{text}" (quoted) for a string such as a serial number, or {decimal}')
+        if kind == "string":
+            return ((f'"{text}" stays a string here but is a number for rcl '
+                     f"({_kind_name(rcl_type_scalar(text)[0])})"),
+                    f'quote it ("{text}") if it is a string, or write {decimal}')
+        return None
+    if text in _LETTER_BOOLS and kind == "bool":
+        return (f'rcl reads "{text}" as the bool {_fmt(value)} (YAML 1.1 boolean), not as a letter',
+                f'quote it ("{text}") for the letter, or write {"true" if value else "false"}')
+    if kind != "string":
+        return None
+    if text in _NULLS:
+        return ((f'"{text}" is YAML null, which parameters do not have: rcl hands the node the '
+                 f'string "{text}"'),
+                'remove the parameter to keep its default, or give a value ("" for an empty string)')
+    if _UNDERSCORE_NUMBER.fullmatch(text):
+        return (f'rcl reads "{text}" as a string: digit separators are YAML 1.1 only',
+                f"write {text.replace('_', '')}")
+    if rcl_type_scalar(text)[0] == "double":
+        return ((f'"{text}" reaches the node as a string: PyYAML (YAML 1.1) does not read it as a '
+                 "number, although rcl would"),
+                f"write a plain decimal float such as {_decimal_hint(text)}")
+    return None
+
+
+def _decimal_hint(text: str) -> str:
+    kind, value = rcl_type_scalar(text)
+    if kind == "double" and math.isfinite(value):
+        return f"{value!r}" if "e" not in f"{value!r}" else f"{value:.1f}"
+    return "1000.0"
+
+
+@rule("P112", "ambiguous-parameter-typing")
+def ambiguous_typing(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for _, node in nodes_with_params(ctx):
+        params = effective(ctx, node)
+        if not params:
+            continue
+        written = _written(ctx, node)
+        iface = interface(ctx, node)
+        decls = (iface.parameters or {}) if iface is not None else {}
+        yield from _launch_nulls(node, seen)
+        for name, ep in sorted(params.items()):
+            if ep.origin is None or ep.origin not in written or (ep.origin, name) in seen:
+                continue
+            text, quoted, origin = written[ep.origin]
+            decl = decls.get(name)
+            decl_type = None if decl is None or decl.dynamic_type else decl.type
+            found = _problem(text, quoted, origin, ep.kind, ep.value, decl_type)
+            if found is None:
+                continue
+            seen.add((ep.origin, name))
+            what, instead = found
+            yield Diagnostic(
+                "P112", ep.origin,
+                f'parameter "{name}" of {node.fqn or node.executable}: {what}',
+                help=instead, key=f"{node.fqn}:{name}")
+
+
+def _launch_nulls(node: NodeInstance, seen: set[object]) -> Iterator[Diagnostic]:
+    """``<param value="null">``/``~``: PyYAML makes it None, a type no parameter has."""
+    for src in node.param_sources:
+        if not isinstance(src, ResolvedParamDict):
+            continue
+        for prm in src.params:
+            if prm.typed_by != "yaml" or prm.raw is None or prm.raw.strip() not in _NULLS:
+                continue
+            if (prm.span, prm.name) in seen:
+                continue
+            seen.add((prm.span, prm.name))
+            yield Diagnostic(
+                "P112", prm.span,
+                f'parameter "{prm.name}" of {node.fqn or node.executable}: value "{prm.raw}" is YAML '
+                "null for launch (PyYAML), a type no parameter has; launch refuses to start the node",
+                help='remove the parameter to keep its default, or quote the text ("\'null\'")',
+                key=f"{node.fqn}:{prm.name}")

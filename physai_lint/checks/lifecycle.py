@@ -2,7 +2,8 @@
 S203 container-not-launched."""
 from __future__ import annotations
 
-from typing import Any, Iterator
+from collections.abc import Iterator
+from typing import Any
 
 from physai_lint.checks._params import effective
 from physai_lint.checks._util import did_you_mean
@@ -81,17 +82,28 @@ def unmanaged(ctx: CheckContext) -> Iterator[Diagnostic]:
                     help=f'add "{node.name}" to a lifecycle manager\'s node_names', key=node.fqn)
 
 
+_CONTAINER_EXECUTABLES = ("component_container", "component_container_mt", "component_container_isolated")
+
+
+def _is_container(node: NodeInstance) -> bool:
+    return node.kind == "container" or (
+        node.kind == "node" and node.package == "rclcpp_components" and node.executable in _CONTAINER_EXECUTABLES)
+
+
 @rule("S203", "container-not-launched")
 def container_not_launched(ctx: CheckContext) -> Iterator[Diagnostic]:
     seen: set[object] = set()
     for launch in ctx.launches:
-        containers = {n.fqn for n in launch.nodes if n.kind == "container"}
-        if launch.opaque or any(n.kind == "container" and n.fqn is None for n in launch.nodes):
+        started = [n for n in launch.nodes if _is_container(n)]
+        if not started:
+            continue  # loads into a container started elsewhere (another launch, a running system)
+        containers = {n.fqn for n in started}
+        if launch.opaque or any(n.fqn is None for n in started):
             continue
         for node in launch.nodes:
             if node.kind != "composable_node" or node.container_id is not None or node.container is None:
                 continue
-            if node.container in containers or node.span in seen:
+            if node.active is False or node.container in containers or node.span in seen:
                 continue
             seen.add(node.span)
             close = did_you_mean(node.container, [c for c in containers if c])

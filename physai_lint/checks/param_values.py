@@ -129,26 +129,72 @@ def undeclared(ctx: CheckContext) -> Iterator[Diagnostic]:
                 help="fix the parameter name, or remove it", key=f"{node.fqn}:{name}")
 
 
+# Nodes whose output does not depend on the clock: leaving them on wall time is harmless.
+_TIME_AGNOSTIC = frozenset({("tf2_ros", "static_transform_publisher")})
+
+
+def _fully_known(ctx: CheckContext, node: Any, params: dict[str, Any]) -> bool:
+    """Every parameter source of the node is statically known, so "unset" really is unset."""
+    from physai_lint.resolve.model import ResolvedParamFile, UnknownParams
+
+    if node.fqn is None or any(not ep.certain for ep in params.values()):
+        return False
+    for src in node.param_sources:
+        if isinstance(src, UnknownParams):
+            return False
+        if isinstance(src, ResolvedParamFile) and src.status != "missing":
+            model = ctx.param_files.get(src.source or "") or ctx.param_files.get(src.path or "")
+            if model is None or not model.ok:
+                return False
+        if any(getattr(p, "value", 0) is None for p in getattr(src, "params", ())):
+            return False
+    return True
+
+
 @rule("P111", "inconsistent-use-sim-time")
 def use_sim_time(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
     for launch in ctx.launches:
         values: dict[bool, list[tuple[Any, Any]]] = {True: [], False: []}
+        unset: list[Any] = []
         for node in launch.nodes:
             if node.active is False or node.kind == "process":
                 continue
-            ep = effective(ctx, node).get("use_sim_time")
+            params = effective(ctx, node)
+            ep = params.get("use_sim_time")
             if ep is not None and isinstance(ep.value, bool) and ep.origin is not None:
                 values[ep.value].append((node, ep))
-        if not values[True] or not values[False]:
-            continue
-        minority = min(values[True], values[False], key=len)
-        majority = values[True] if minority is values[False] else values[False]
-        for node, ep in minority:
-            other = majority[0][0]
+            elif ep is None and node.kind != "container" and _fully_known(ctx, node, params) and \
+                    (node.package, node.executable) not in _TIME_AGNOSTIC:
+                unset.append(node)
+        if values[True] and values[False]:
+            minority = min(values[True], values[False], key=len)
+            majority = values[True] if minority is values[False] else values[False]
+            for node, ep in minority:
+                other = majority[0][0]
+                if (ep.origin, node.fqn) in seen:
+                    continue
+                seen.add((ep.origin, node.fqn))
+                yield Diagnostic(
+                    "P111", ep.origin,
+                    f'{node.fqn or node.executable} has use_sim_time {_fmt(ep.value)} but '
+                    f"{len(majority)} other node(s) of this launch (e.g. {other.fqn or other.executable}) "
+                    f"have {_fmt(not ep.value)}",
+                    help="set use_sim_time the same way for every node (SetParameter('use_sim_time', ...))",
+                    key=f"{node.fqn}:use_sim_time")
+        if not values[True] or launch.use_sim_time_actions:
+            continue  # SetUseSimTime may cover the unset nodes; its scope is not tracked here
+        other = values[True][0][0]
+        for node in unset:
+            if (node.span, node.fqn) in seen:
+                continue
+            seen.add((node.span, node.fqn))
             yield Diagnostic(
-                "P111", ep.origin,
-                f'{node.fqn or node.executable} has use_sim_time {_fmt(ep.value)} but '
-                f"{len(majority)} other node(s) of this launch (e.g. {other.fqn or other.executable}) "
-                f"have {_fmt(not ep.value)}",
-                help="set use_sim_time the same way for every node (SetParameter('use_sim_time', ...))",
+                "P111", node.span,
+                f"{node.fqn} never gets use_sim_time, so it runs on wall-clock time (default false), "
+                f"but {len(values[True])} other node(s) of this launch (e.g. {other.fqn or other.executable}) "
+                "have use_sim_time true",
+                help="give every node use_sim_time, e.g. one SetParameter(name='use_sim_time', "
+                     "value=...) before the nodes, or add it to this node's parameters",
+                related=(Related(values[True][0][1].origin, "use_sim_time true here"),),
                 key=f"{node.fqn}:use_sim_time")

@@ -7,6 +7,7 @@ statically.
 from __future__ import annotations
 
 import json
+import math
 import os
 from typing import Any
 
@@ -47,7 +48,7 @@ def _effective(project: Project, node: NodeInstance) -> dict[str, Any]:
 def _jsonable(value: Any) -> Any:
     if isinstance(value, (list, tuple)):
         return [_jsonable(v) for v in value]
-    if isinstance(value, float) and (value != value or value in (float("inf"), float("-inf"))):
+    if isinstance(value, float) and (math.isnan(value) or math.isinf(value)):
         return str(value)
     if isinstance(value, bytes):
         return list(value)
@@ -75,6 +76,7 @@ def graph_document(project: Project, launch: LaunchResult) -> dict[str, Any]:
             "source": {"file": _rel(n.span.file, cwd), "line": n.span.line, "column": n.span.col},
             "include_chain": [_rel(f, cwd) for f in n.include_chain],
             "timer_lost": list(n.timer_lost),
+            "arguments": list(n.arguments),
         })
     g = build_graph(launch, project.interfaces)
     topics: dict[str, dict[str, Any]] = {}

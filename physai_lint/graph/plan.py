@@ -12,10 +12,14 @@ Hard edges (launch enforces them, or the system cannot come up without them):
   configures and activates them in that order).
 
 Soft edges: a subscriber after the publishers of the topics it subscribes to (from the
-``SystemGraph``), added only when they do not close a cycle.
+``SystemGraph``). They are reported, not enforced: launch starts both at once and ROS 2 delivers
+messages whenever the publisher appears, and robots are full of topic loops (odometry -> controller
+-> cmd_vel -> base -> odometry), so ordering by topics would invent a long chain of stages that
+does not exist. A soft edge whose publisher starts in a later stage than its subscriber is marked
+``against`` (the subscriber waits for data at start-up).
 
-Stages are the topological generations of the hard + soft DAG, hard cycles condensed into one
-vertex (so a cyclic plan still has stages). ``cycles`` lists the simple cycles of the hard edges
+Stages are the topological generations of the hard edges, hard cycles condensed into one vertex
+(so a cyclic plan still has stages). ``cycles`` lists the simple cycles of the hard edges
 (bounded); a cycle is ``deadlock`` when none of its members can ever start: every member only
 runs from event handlers whose targets only run from handlers of the cycle (the resolver walks a
 handler's actions as if the event came, so it records such actions as started). A cycle with a
@@ -91,7 +95,6 @@ class Plan:
     critical_path: list[str] = field(default_factory=list)
     critical_delay: float = 0.0
     never_started: list[tuple[Span, str]] = field(default_factory=list)
-    skipped_soft: int = 0  # soft edges left out because they would close a cycle
 
     @property
     def labels(self) -> dict[str, str]:
@@ -260,26 +263,14 @@ def build_plan(launch: LaunchResult, graph: SystemGraph | None,
         found.append(PlanCycle(tuple(cyc), edges, deadlock=not (set(cyc) & startable)))
     plan.cycles = sorted(found, key=lambda c: [vertex_key(plan.vertices[n]) for n in c.nodes])
 
-    # ---- condensed DAG, soft edges, stages --------------------------------------------------------
+    # ---- stages from the hard edges (condensed); soft edges are shown, never move a stage -------------
     cond = nx.condensation(H)
     member = cond.graph["mapping"]
     D = nx.DiGraph(cond.edges())
     D.add_nodes_from(cond.nodes())
-    soft: list[PlanEdge] = []
-    for e in _topic_edges(graph, ids):
-        cu, cv = member[e.before], member[e.after]
-        if cu == cv or D.has_edge(cu, cv):
-            if cu != cv:
-                soft.append(e)  # already ordered by a hard edge: show it, costs nothing
-            continue
-        if nx.has_path(D, cv, cu):
-            plan.skipped_soft += 1
-            continue
-        D.add_edge(cu, cv)
-        soft.append(e)
-    # drop soft edges duplicating a hard edge between the same two vertices
     hard_pairs = {(e.before, e.after) for e in hard}
-    soft = [e for e in soft if (e.before, e.after) not in hard_pairs]
+    soft = [e for e in _topic_edges(graph, ids)
+            if member[e.before] != member[e.after] and (e.before, e.after) not in hard_pairs]
 
     for gen in nx.topological_generations(D):
         members = [m for c in gen for m in cond.nodes[c]["members"]]

@@ -11,7 +11,12 @@ from typing import Any
 
 
 def _label(n: dict[str, Any]) -> str:
-    return n["fqn"] or f"{n['package'] or '?'}/{n['executable'] or '?'}"
+    """The fqn; for a node without a known name its executable and first positional argument
+    (three ``spawner`` processes differ only by the controller they load)."""
+    if n["fqn"]:
+        return str(n["fqn"])
+    arg = next((a for a in n.get("arguments") or () if a and not a.startswith("-")), None)
+    return f"{n['package'] or '?'}/{n['executable'] or '?'}" + (f" [{arg}]" if arg else "")
 
 
 def _dangling(doc: dict[str, Any]) -> dict[str, str]:
@@ -43,7 +48,8 @@ def text(doc: dict[str, Any]) -> str:
             lines.append(f"{indent}include {chain[-1]} -> {by_chain[chain][0]['source']['file']}")
         for n in by_chain[chain]:
             state = "" if n["active"] is True else (" (inactive)" if n["active"] is False else " (condition unknown)")
-            lines.append(f"{indent}  {n['kind']} {_label(n)}  [{n['package']}/{n['executable']}]"
+            what = f"  [{n['package']}/{n['executable']}]" if n["fqn"] else ""
+            lines.append(f"{indent}  {n['kind']} {_label(n)}{what}"
                          f"  {n['source']['file']}:{n['source']['line']}{state}")
             for src, dst in n["remappings"]:
                 lines.append(f"{indent}      remap {src} -> {dst}")
@@ -100,26 +106,40 @@ def _mid(s: str) -> str:
     return "".join(ch if ch.isalnum() else "_" for ch in s)
 
 
+def _mq(s: str) -> str:
+    return '"' + s.replace('"', "#quot;") + '"'
+
+
 def mermaid(doc: dict[str, Any]) -> str:
     out = ["flowchart LR"]
     clusters: dict[str, list[dict[str, Any]]] = {}
     for n in doc["nodes"]:
         clusters.setdefault(n["namespace"] or "?", []).append(n)
     for i, ns in enumerate(sorted(clusters)):
-        out.append(f'  subgraph ns{i}["{ns}"]')
+        out.append(f"  subgraph ns{i}[{_mq(ns)}]")
         for n in clusters[ns]:
-            out.append(f'    {_mid(n["id"])}["{_label(n)}"]')
+            shape = f"[({_mq(_label(n))})]" if n["kind"] == "container" else f"[{_mq(_label(n))}]"
+            out.append(f"    {_mid(n['id'])}{shape}")
         out.append("  end")
     dangling = _dangling(doc)
     for t in doc["topics"]:
         tid = "t_" + _mid(t["name"])
-        out.append(f'  {tid}(["{t["name"]}"])')
-        if t["name"] in dangling:
-            out.append(f"  style {tid} stroke:#d00,stroke-width:2px")
+        out.append(f"  {tid}([{_mq(t['name'] + (' (' + dangling[t['name']] + ')' if t['name'] in dangling else ''))}])")
         for p in t["publishers"]:
             out.append(f"  {_mid(p)} --> {tid}")
         for s in t["subscribers"]:
             out.append(f"  {tid} --> {_mid(s)}")
+    containers = {n["fqn"]: n["id"] for n in doc["nodes"] if n["kind"] == "container" and n["fqn"]}
+    for n in doc["nodes"]:
+        if n.get("container") in containers:
+            out.append(f"  {_mid(containers[n['container']])} -.->|loads| {_mid(n['id'])}")
+    if dangling:
+        out.append("  classDef dangling stroke:#d00,stroke-width:2px,color:#d00")
+        out.append("  class " + ",".join("t_" + _mid(t) for t in sorted(dangling)) + " dangling")
+    inactive = [_mid(n["id"]) for n in doc["nodes"] if n["active"] is False]
+    if inactive:
+        out.append("  classDef inactive stroke-dasharray:4 3,color:#888")
+        out.append("  class " + ",".join(inactive) + " inactive")
     return "\n".join(out) + "\n"
 
 

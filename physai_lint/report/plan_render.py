@@ -8,23 +8,25 @@ JSON (``"version": 1``)::
      "vertices": [{"id", "label", "fqn", "kind", "package", "executable", "file", "line",
                    "stage", "delay", "active"}],          # in stage order
      "stages": [["n1", "n2"], ["n3"]],                  # vertex ids, stage 1 first
-     "edges": [{"before", "after", "reason", "soft", "delay", "file", "line"}],
+     "edges": [{"before", "after", "reason", "soft", "delay", "file", "line", "against"}],
      "cycles": [{"nodes": [...], "text": "a -> b -> a", "deadlock": bool, "file", "line"}],
      "cycles_truncated": bool,
      "critical_path": {"nodes": [...], "delay": 3.0},
-     "never_started": [{"file", "line", "message"}],
-     "skipped_soft_edges": 0}
+     "never_started": [{"file", "line", "message"}]}
 
 ``reason`` is one of ``on_process_start``, ``on_process_exit``, ``on_execution_complete``,
 ``on_state_transition``, ``container``, ``lifecycle manager``, ``lifecycle order``, ``topic <name>``.
+Stages come from the hard edges only; a soft (topic) edge is ``against`` the plan when its publisher
+starts in a later stage than its subscriber.
 """
 from __future__ import annotations
 
+import io
 import json
 import os
 from typing import Any
 
-from physai_lint.graph.plan import Plan, PlanEdge
+from physai_lint.graph.plan import Plan, PlanEdge, PlanVertex
 
 FORMATS = ("text", "json", "dot", "mermaid")
 
@@ -62,69 +64,110 @@ def render_plan(plan: Plan, fmt: str, cwd: str) -> str:
 
 
 # ---- text ------------------------------------------------------------------------------------------
-def _why(e: PlanEdge, labels: dict[str, str], cwd: str) -> str:
-    b = labels.get(e.before, e.before)
+MAX_LISTED = 6  # names listed on one line before "and N more"
+
+
+def _names(items: list[str]) -> str:
+    if len(items) <= MAX_LISTED:
+        return ", ".join(items)
+    return ", ".join(items[:MAX_LISTED]) + f" and {len(items) - MAX_LISTED} more"
+
+
+def _hard_why(reason: str, befores: list[str], e: PlanEdge, cwd: str) -> str:
+    b = _names(befores)
     where = f", {_rel(e.span.file, cwd)}:{e.span.line}" if e.span is not None else ""
-    if e.reason in _EVENT:
-        verb, cls = _EVENT[e.reason]
+    if reason in _EVENT:
+        verb, cls = _EVENT[reason]
         timer = f", then a {_secs(e.delay)} timer" if e.delay else ""
         return f"after {b} {verb} ({cls}{where}){timer}"
-    if e.reason == "container":
+    if reason == "container":
         return f"after container {b} (loaded into it)"
-    if e.reason == "lifecycle manager":
-        return f"after {b} (manages it: node_names)"
-    if e.reason == "lifecycle order":
-        return f"after {b} (lifecycle manager brings node_names up in order)"
-    if e.reason.startswith("topic "):
-        return f"wants {b} (publishes {e.reason[6:]})"
-    return f"after {b} ({e.reason}{where})"
+    if reason == "lifecycle manager":
+        return f"after {b} (manages {'it' if len(befores) == 1 else 'them'}: node_names)"
+    if reason == "lifecycle order":
+        return f"after {b} (the lifecycle manager brings node_names up in order)"
+    return f"after {b} ({reason}{where})"
+
+
+def _waits(plan: Plan, vid: str, cwd: str) -> list[str]:
+    """One line per (reason, handler) for the hard edges, one line for all topic needs."""
+    labels = plan.labels
+    groups: dict[tuple[str, Any, Any], list[PlanEdge]] = {}
+    soft: dict[str, list[str]] = {}
+    against: set[str] = set()
+    for e in plan.waits_for(vid):
+        if e.soft:
+            soft.setdefault(e.before, []).append(e.reason.removeprefix("topic "))
+            if plan.vertices[e.before].stage > plan.vertices[vid].stage:
+                against.add(e.before)
+        else:
+            groups.setdefault((e.reason, e.span, e.delay), []).append(e)
+    out = [f"<- {_hard_why(r, [labels[e.before] for e in es], es[0], cwd)}" for (r, _, _), es in groups.items()]
+    if soft:
+        pubs = []
+        for pub in sorted(soft, key=lambda p: (plan.vertices[p].stage, labels[p])):
+            late = f", stage {plan.vertices[pub].stage}: starts later" if pub in against else ""
+            pubs.append(f"{labels[pub]} ({_names(soft[pub])}{late})")
+        out.append("~  data from " + _names(pubs))
+    return out
+
+
+def _vertex_line(v: PlanVertex, width: int, cwd: str) -> str:
+    what = f"{v.package}/{v.executable}" if v.package else (v.executable or "?")
+    tags = []
+    if v.kind != "node":
+        tags.append(v.kind.replace("_", " "))
+    if v.active is None:
+        tags.append("conditional")
+    if v.delay:
+        tags.append(f"timer +{_secs(v.delay)}")
+    elif v.delay is None:
+        tags.append("timer of unknown length")
+    tail = f"  [{', '.join(tags)}]" if tags else ""
+    return f"{v.label:<{width}}  {what}{tail}  {_rel(v.file, cwd)}:{v.line}"
 
 
 def _text(plan: Plan, cwd: str) -> str:
+    from rich.console import Console
+    from rich.text import Text
+    from rich.tree import Tree
+
+    buf = io.StringIO()
+    console = Console(file=buf, width=4000, no_color=True, color_system=None, highlight=False,
+                      soft_wrap=True, emoji=False, markup=False)
     labels = plan.labels
     n_hard = sum(1 for e in plan.edges if not e.soft)
     n_soft = len(plan.edges) - n_hard
-    out = [f"Startup plan: {_rel(plan.entry, cwd)}",
-           (f"  {len(plan.vertices)} processes in {len(plan.stages)} stage(s); "
-            f"{n_hard} ordering edge(s), {n_soft} topic need(s) (soft)"), ""]
-    width = max((len(v.label) for v in plan.vertices.values()), default=0)
-    width = min(width, 48)
+    console.print(f"Startup plan: {_rel(plan.entry, cwd)}")
+    console.print(f"{len(plan.vertices)} processes in {len(plan.stages)} stage(s); {n_hard} ordering edge(s); "
+                  f"{n_soft} topic need(s) (shown with ~, they do not change the stages)")
     for i, stage in enumerate(plan.stages, 1):
-        title = "starts with the launch" if i == 1 else "waits for an earlier stage"
-        out.append(f"Stage {i} — {title}")
+        width = min(max(len(plan.vertices[v].label) for v in stage), 40)
+        title = "starts with the launch" if i == 1 else f"after stage {i - 1}"
+        tree = Tree(Text(f"Stage {i}: {title} ({len(stage)})"), guide_style="none")
         for vid in stage:
-            v = plan.vertices[vid]
-            what = f"{v.package}/{v.executable}" if v.package else (v.executable or "?")
-            extra = []
-            if v.kind not in ("node",):
-                extra.append(v.kind.replace("_", " "))
-            if v.active is None:
-                extra.append("conditional")
-            if v.delay:
-                extra.append(f"timer +{_secs(v.delay)}")
-            elif v.delay is None:
-                extra.append("timer of unknown length")
-            tail = f"  [{', '.join(extra)}]" if extra else ""
-            out.append(f"  {v.label:<{width}}  {what}  ({_rel(v.file, cwd)}:{v.line}){tail}")
-            for e in plan.waits_for(vid):
-                mark = "~" if e.soft else "<-"
-                out.append(f"      {mark} {_why(e, labels, cwd)}")
-        out.append("")
-    if plan.critical_path and len(plan.critical_path) > 1 or plan.critical_delay:
+            branch = tree.add(Text(_vertex_line(plan.vertices[vid], width, cwd)))
+            for line in _waits(plan, vid, cwd):
+                branch.add(Text(line))
+        console.print()
+        console.print(tree)
+    console.print()
+    if len(plan.critical_path) > 1 or plan.critical_delay:
         path = " -> ".join(labels[p] for p in plan.critical_path)
-        out.append(f"Critical path ({_secs(plan.critical_delay)} of timers): {path}")
+        if plan.critical_delay:
+            console.print(f"Critical path ({_secs(plan.critical_delay)} of timers): {path}")
+        else:
+            console.print(f"Longest chain (no timers): {path}")
     for c in plan.cycles:
         kind = "DEADLOCK, none of them ever starts" if c.deadlock else "executes an action twice"
-        out.append(f"Cycle ({kind}): {c.text(labels)}")
+        console.print(f"Cycle ({kind}): {c.text(labels)}")
     if plan.cycles_truncated:
-        out.append("  (more cycles not shown)")
+        console.print("  (more cycles not shown)")
     for span, msg in plan.never_started:
-        out.append(f"Never fires: handler at {_rel(span.file, cwd)}:{span.line}: {msg}")
-    if plan.skipped_soft:
-        out.append(f"({plan.skipped_soft} topic need(s) left out: they would close a cycle)")
-    out.append("Legend: <- must start first (event handler, container, lifecycle manager); "
-               "~ should start first (topic)")
-    return "\n".join(out).rstrip() + "\n"
+        console.print(f"Never fires: handler at {_rel(span.file, cwd)}:{span.line}: {msg}")
+    console.print("Legend: <- must start first (event handler, timer, container, lifecycle manager); "
+                  "~ data it subscribes to (soft)")
+    return "\n".join(line.rstrip() for line in buf.getvalue().rstrip().splitlines()) + "\n"
 
 
 # ---- json ------------------------------------------------------------------------------------------
@@ -140,7 +183,9 @@ def _json(plan: Plan, cwd: str) -> dict[str, Any]:
         "stages": plan.stages,
         "edges": [{"before": e.before, "after": e.after, "reason": e.reason, "soft": e.soft,
                    "delay": e.delay, "file": _rel(e.span.file, cwd) if e.span else None,
-                   "line": e.span.line if e.span else None} for e in plan.edges],
+                   "line": e.span.line if e.span else None,
+                   "against": e.soft and plan.vertices[e.before].stage > plan.vertices[e.after].stage}
+                  for e in plan.edges],
         "cycles": [{"nodes": list(c.nodes), "text": c.text(labels), "deadlock": c.deadlock,
                     "file": _rel(c.edges[0].span.file, cwd) if c.edges and c.edges[0].span else None,
                     "line": c.edges[0].span.line if c.edges and c.edges[0].span else None}
@@ -149,7 +194,6 @@ def _json(plan: Plan, cwd: str) -> dict[str, Any]:
         "critical_path": {"nodes": plan.critical_path, "delay": plan.critical_delay},
         "never_started": [{"file": _rel(s.file, cwd), "line": s.line, "message": m}
                           for s, m in plan.never_started],
-        "skipped_soft_edges": plan.skipped_soft,
     }
 
 
@@ -182,8 +226,8 @@ def _dot(plan: Plan) -> str:
     cyc_edges = {(e.before, e.after) for c in plan.cycles for e in c.edges}
     for e in plan.edges:
         attrs = [f"label={_q(_edge_label(e))}"]
-        if e.soft:
-            attrs.append("style=dashed")
+        if e.soft:  # shown, but the stages come from the hard edges: do not let it move ranks
+            attrs += ["style=dashed", "constraint=false"]
         if (e.before, e.after) in cyc_edges:
             attrs.append("color=red")
         out.append(f"  {_q(e.before)} -> {_q(e.after)} [{', '.join(attrs)}];")

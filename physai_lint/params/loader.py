@@ -99,6 +99,8 @@ class _Parser:
         self.seq_launch: list[Any] = []
         self.seq_start: Any = None
         self.seq_key_span: Span | None = None
+        # a mapping inside a sequence (``- interfaces: [a, b]``): map_depth outside it, while open
+        self.seq_map_depth: int | None = None
         self.failed = False
 
     # -- helpers ----------------------------------------------------------------------------------
@@ -163,6 +165,13 @@ class _Parser:
                          f"'{kind}' do not belong at line_num {span.line}\")",
                          "make every element the same type (e.g. write 1.0 instead of 1 in a "
                          "double array, or quote every element of a string array)")
+            if self.seq_map_depth is not None and self.seq_start is None:
+                self.err("P104", span,
+                         f"\"{value}\" is a value in a mapping inside a sequence (parameter "
+                         f"\"{self.cur_name()}\"): rcl does not read it as a parameter but appends "
+                         "it to an array, and the next key becomes an item too",
+                         "give each key of a mapping inside a sequence a list value, or flatten "
+                         "the structure into separate parameters")
             self.seq_items.append(typed)
             self.seq_launch.append(launch_value)
 
@@ -216,7 +225,8 @@ class _Parser:
 
     def sequence_start(self, ev: Any) -> None:
         span = _span(self.path, ev, end=False)
-        if self.is_seq:
+        if self.is_seq and not (self.seq_map_depth is not None and self.seq_start is None
+                                and not self.is_key):
             self.err("P104", span, f"nested sequences are not supported in parameter "
                      f"\"{self.cur_name()}\" (parameters have no nested array type)")
         if self.is_key:
@@ -250,16 +260,29 @@ class _Parser:
                                self.seq_key_span or span, False, [])
             if self.block is not None:
                 self.block.params.append(fp)
+        elif self.seq_map_depth is not None and self.map_depth == self.seq_map_depth:
+            self.seq_map_depth = None  # the end of the sequence that held a mapping
         self.is_seq = False
         self.is_key = True
         self.seq_start = None
 
     def mapping_start(self, ev: Any) -> None:
+        # rcl accepts one mapping in a sequence whose keys hold lists (ros2_control's
+        # ``gpio: - interfaces: [a]``): the keys become parameters below the sequence's name.
+        span = _span(self.path, ev, end=False)
+        if self.is_seq and (self.seq_items or self.seq_map_depth is not None):
+            self.err("P104", span, f"sequence \"{self.cur_name()}\" mixes items with mappings: rcl "
+                     "puts them all into one parameter", "flatten the structure into separate "
+                     "parameters or arrays of scalars")
+        if self.seq_map_depth is not None and not self.is_seq and self.map_depth == self.seq_map_depth:
+            self.err("P104", span, f"a second mapping in the sequence above \"{self.cur_name()}\": "
+                     "rcl nests it under the first one's last parameter instead of making a list "
+                     "of maps (parameters have no dict type)", "flatten the structure into "
+                     "separate parameters or arrays of scalars")
         if self.is_seq:
-            span = _span(self.path, ev, end=False)
-            self.err("P104", span, f"sequences of maps are not supported (parameter "
-                     f"\"{self.cur_name()}\"): parameters have no dict type",
-                     "flatten the structure into separate parameters or arrays of scalars")
+            self.seq_map_depth = self.map_depth
+            self.is_seq = True
+            self.seq_start = None
         self.map_depth += 1
         self.is_new_map = True
         self.is_key = True
@@ -298,8 +321,20 @@ class _DupTracker:
         self.path = path
         self.model = model
         self.stack: list[list[Any]] = []  # [kind, expect_key, keys dict]
+        self.pending: tuple[str, Span, Span] | None = None  # duplicate key waiting for its value
 
     def node(self, ev: Any, is_scalar: bool) -> None:
+        if self.pending is not None:
+            key, span, first = self.pending
+            self.pending = None
+            if isinstance(ev, yaml.MappingStartEvent):
+                what = ("rcl merges both mappings, but other YAML readers (PyYAML: launch_ros for "
+                        "composable nodes, yaml.safe_load in scripts) keep only the second")
+            else:
+                what = "rcl keeps the first position and overwrites its value"
+            self.model.diagnostics.append(Diagnostic(
+                "X006", span, f"duplicate key \"{key}\" (first at line {first.line}); {what}",
+                "remove one of them, or merge their contents under one key", key=key))
         if self.stack and self.stack[-1][0] == "map":
             frame = self.stack[-1]
             if frame[1]:
@@ -311,11 +346,7 @@ class _DupTracker:
                         self.model.has_ros_parameters = True
                     first = frame[2].get(key)
                     if first is not None:
-                        self.model.diagnostics.append(Diagnostic(
-                            "X006", span,
-                            f"duplicate key \"{key}\" (first at line {first.line}); rcl keeps "
-                            "the first position and overwrites its value",
-                            "remove one of them", key=key))
+                        self.pending = (key, span, first)
                     else:
                         frame[2][key] = span
             else:

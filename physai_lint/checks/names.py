@@ -10,33 +10,37 @@ from physai_lint.checks.base import CheckContext, rule
 from physai_lint.checks.topics import graphs
 from physai_lint.model.findings import Diagnostic, Related
 from physai_lint.resolve import names
+from physai_lint.resolve.model import NodeInstance
 
 
 @rule("N101", "duplicate-node-name")
 def duplicate_node_name(ctx: CheckContext) -> Iterator[Diagnostic]:
     seen: set[object] = set()
     for launch in ctx.launches:
-        first: dict[str, object] = {}
+        first: dict[str, list[NodeInstance]] = {}
         for node in launch.nodes:
-            if node.kind == "process" or node.active is False or not node.fqn or not node.name_explicit:
+            # Only nodes certainly started under the analysed arguments: a condition that cannot be
+            # evaluated (an unknown PythonExpression, say) often excludes the other node.
+            if node.kind == "process" or node.active is not True or not node.fqn or not node.name_explicit:
                 continue
             if node.kind == "composable_node":
                 continue  # N107 covers components; a component and a node are still checked below
-            prev = first.get(node.fqn)
+            earlier = first.setdefault(node.fqn, [])
+            prev = earlier[0] if earlier else None
+            earlier.append(node)
             if prev is None:
-                first[node.fqn] = node
                 continue
             span = node.spans.get("name", node.span)
             if span in seen:
                 continue
             seen.add(span)
-            p = prev  # type: ignore[assignment]
+            p = prev
             yield Diagnostic(
                 "N101", span,
-                f'node "{node.fqn}" is launched twice (also at line {p.span.line}); '  # type: ignore[attr-defined]
+                f'node "{node.fqn}" is launched twice (also at line {p.span.line}); '
                 "services, parameters and topics of the two collide",
                 help="give each node its own name or namespace (PushRosNamespace / namespace=)",
-                related=(Related(p.spans.get("name", p.span), "first launched here"),),  # type: ignore[attr-defined]
+                related=(Related(p.spans.get("name", p.span), "first launched here"),),
                 key=node.fqn)
 
 
@@ -44,23 +48,22 @@ def duplicate_node_name(ctx: CheckContext) -> Iterator[Diagnostic]:
 def duplicate_component(ctx: CheckContext) -> Iterator[Diagnostic]:
     seen: set[object] = set()
     for launch in ctx.launches:
-        first: dict[tuple[str | None, str], object] = {}
+        first: dict[tuple[str | None, str], list[NodeInstance]] = {}
         for node in launch.nodes:
-            if node.kind != "composable_node" or node.active is False or not node.fqn or not node.name_explicit:
+            if node.kind != "composable_node" or node.active is not True or not node.fqn or not node.name_explicit:
                 continue
             key = (node.container, node.fqn)
-            if key not in first:
-                first[key] = node
-                continue
-            if node.span in seen:
+            earlier = first.setdefault(key, [])
+            prev = earlier[0] if earlier else None
+            earlier.append(node)
+            if prev is None or node.span in seen:
                 continue
             seen.add(node.span)
-            prev = first[key]
             yield Diagnostic(
                 "N107", node.span,
                 f'component "{node.fqn}" is loaded twice into container "{node.container}"',
                 help="give each component a distinct name or namespace",
-                related=(Related(prev.span, "first loaded here"),),  # type: ignore[attr-defined]
+                related=(Related(prev.span, "first loaded here"),),
                 key=node.fqn)
 
 
@@ -102,13 +105,13 @@ def invalid_namespace(ctx: CheckContext) -> Iterator[Diagnostic]:
             continue
         if any(node.namespace == b or node.namespace.startswith(b + "/") for b in bad_pushes):
             continue  # already reported where the namespace was pushed
-        span = node.spans.get("namespace")
-        if span is None or span in seen:
+        ns_span = node.spans.get("namespace")
+        if ns_span is None or ns_span in seen:
             continue
         reason = names.validate_namespace(node.namespace)
         if reason:
-            seen.add(span)
-            yield Diagnostic("N103", span, f'namespace "{node.namespace}" is invalid: {reason}',
+            seen.add(ns_span)
+            yield Diagnostic("N103", ns_span, f'namespace "{node.namespace}" is invalid: {reason}',
                              help='namespaces use letters, digits, "_" and "/", and no token starts with a digit',
                              key=node.namespace)
 

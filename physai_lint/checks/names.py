@@ -200,6 +200,9 @@ def invalid_topic_name(ctx: CheckContext) -> Iterator[Diagnostic]:
             written_bad = reason is not None
             shown = f'"{e.written}"'
             if reason is None and e.resolved is not None:
+                if node.namespace is None or names.validate_namespace(node.namespace) or (
+                        node.name is not None and names.validate_node_name(node.name)):
+                    continue  # an invalid namespace or node name is N103/N102's finding, not each topic's
                 if e.remap is not None and _remap_problem(node.remaps[e.remap].dst or "") is not None:
                     continue  # the remap's replacement is invalid itself: N105 reports it
                 reason = _final_problem(e.resolved)

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import difflib
+import functools
 import os
 from collections.abc import Iterable, Iterator
 
@@ -10,7 +11,14 @@ from physai_lint.resolve.model import LaunchResult, NodeInstance
 
 
 def did_you_mean(name: str, candidates: Iterable[str], n: int = 3, cutoff: float = 0.6) -> list[str]:
-    return difflib.get_close_matches(name, sorted(set(candidates)), n=n, cutoff=cutoff)
+    return list(_close_matches(name, tuple(sorted(set(candidates))), n, cutoff))
+
+
+@functools.lru_cache(maxsize=4096)
+def _close_matches(name: str, candidates: tuple[str, ...], n: int, cutoff: float) -> tuple[str, ...]:
+    # Memoised: the same unknown name is looked up against the same few thousand package names
+    # once per reference, and difflib is the costliest step of a run on a large workspace.
+    return tuple(difflib.get_close_matches(name, candidates, n=n, cutoff=cutoff))
 
 
 def suggestion(name: str, candidates: Iterable[str]) -> str:

@@ -48,13 +48,21 @@ def _kind_name(kind: str | None) -> str:
             "string": "a string"}.get(kind or "", kind or "?")
 
 
-def _written(ctx: CheckContext, node: NodeInstance) -> dict[Span, tuple[str, bool, str]]:
-    """value span -> (text as written, quoted/string literal, where) for the node's sources."""
+def _written(node: NodeInstance) -> dict[Span, tuple[str, bool, str]]:
+    """value span -> (text as written, quoted/string literal, where) for the node's launch
+    parameters; they take precedence over the parameter files' values (``_file_written``)."""
     out: dict[Span, tuple[str, bool, str]] = {}
     for src in node.param_sources:
         if isinstance(src, ResolvedParamDict):
             for prm in src.params:
                 _add_launch_param(out, prm)
+    return out
+
+
+def _file_written(ctx: CheckContext) -> dict[Span, tuple[str, bool, str]]:
+    """value span -> written form of every parameter file value (the same for every node: built
+    once per run, since rebuilding it per node made this rule quadratic)."""
+    out: dict[Span, tuple[str, bool, str]] = {}
     for model in ctx.param_files.values():
         for block in model.blocks:
             for fp in block.params:
@@ -138,18 +146,20 @@ def _decimal_hint(text: str) -> str:
 @rule("P112", "ambiguous-parameter-typing")
 def ambiguous_typing(ctx: CheckContext) -> Iterator[Diagnostic]:
     seen: set[object] = set()
+    file_written = _file_written(ctx)
     for _, node in nodes_with_params(ctx):
         params = effective(ctx, node)
         if not params:
             continue
-        written = _written(ctx, node)
+        written = _written(node)
         iface = interface(ctx, node)
         decls = (iface.parameters or {}) if iface is not None else {}
         yield from _launch_nulls(node, seen)
         for name, ep in sorted(params.items()):
-            if ep.origin is None or ep.origin not in written or (ep.origin, name) in seen:
+            how = None if ep.origin is None else written.get(ep.origin) or file_written.get(ep.origin)
+            if how is None or (ep.origin, name) in seen:
                 continue
-            text, quoted, origin = written[ep.origin]
+            text, quoted, origin = how
             decl = decls.get(name)
             decl_type = None if decl is None or decl.dynamic_type else decl.type
             found = _problem(text, quoted, origin, ep.kind, ep.value, decl_type)

@@ -467,7 +467,8 @@ def _extract_one(path: str, text: str, iface: NodeInterface) -> None:
                 continue
             kind = "publishers" if name.startswith("advertise") else "subscribers"
             getattr(iface, kind).append(Endpoint(n, "sensor_msgs/msg/Image", _span(path, tok)))
-        elif name in ("declare_parameter", "declare_parameter_if_not_declared"):
+        elif name in ("declare_parameter", "declare_parameter_if_not_declared",
+                      "declare_or_get_parameter"):
             j = i + 1
             targ = None
             if j < len(toks) and toks[j].text == "<":

@@ -42,7 +42,8 @@ if TYPE_CHECKING:
     from physai_lint.resolve.model import LaunchResult, NodeInstance
 
 MAX_CYCLES = 50
-MANAGERS = {("nav2_lifecycle_manager", "lifecycle_manager")}
+MANAGERS = {("nav2_lifecycle_manager", "lifecycle_manager"),
+            ("nav2_lifecycle_manager", "nav2_lifecycle_manager::LifecycleManager")}
 HANDLER_REASONS = ("on_process_start", "on_process_exit", "on_execution_complete",
                    "on_state_transition")
 IGNORED_TOPICS = ("/rosout", "/parameter_events")
@@ -112,25 +113,34 @@ def vertex_key(v: PlanVertex) -> tuple[Any, ...]:
     return (v.fqn is None, _natural(v.fqn or v.label), _natural(v.id))
 
 
+def first_positional(args: tuple[str | None, ...], limit: int = 32) -> str | None:
+    """The first positional argument before ``--ros-args`` (``spawner [arm_controller]``); a path
+    is shortened to its file name, a long value cut to ``limit`` characters."""
+    for a in args:
+        if a is None or a == "--ros-args":
+            return None  # unknown, or ROS arguments (log levels, remaps) from here on
+        if a and not a.startswith("-"):
+            a = a.rstrip("/").rsplit("/", 1)[-1] or a
+            return a if len(a) <= limit else a[:limit - 1] + "…"
+    return None
+
+
 def _labels(nodes: list[NodeInstance]) -> dict[str, str]:
+    """Unique labels: the fqn, else the executable; duplicates get "(component)" when one of
+    them is a composable node, then the first positional argument (``spawner [arm_controller]``),
+    then the line."""
     base = {n.id: n.fqn or n.executable or ("process" if n.kind == "process" else "node") for n in nodes}
-    counts: dict[str, int] = {}
-    for lbl in base.values():
-        counts[lbl] = counts.get(lbl, 0) + 1
-    out = {}
-    for n in nodes:
-        lbl = base[n.id]
-        if counts[lbl] > 1:
-            arg = next((a for a in n.arguments if a and not a.startswith("-")), None)
-            lbl = f"{lbl} [{arg}]" if arg else f"{lbl} (line {n.span.line})"
-        out[n.id] = lbl
-    seen: dict[str, int] = {}
-    for n in nodes:  # still ambiguous (same arguments): make unique by id
-        seen[out[n.id]] = seen.get(out[n.id], 0) + 1
-    for n in nodes:
-        if seen[out[n.id]] > 1:
-            out[n.id] = f"{out[n.id]} #{n.id}"
-    return out
+
+    def refine(labels: dict[str, str], how: Callable[[NodeInstance, str], str]) -> dict[str, str]:
+        counts: dict[str, int] = {}
+        for lbl in labels.values():
+            counts[lbl] = counts.get(lbl, 0) + 1
+        return {n.id: how(n, labels[n.id]) if counts[labels[n.id]] > 1 else labels[n.id] for n in nodes}
+
+    out = refine(base, lambda n, lbl: f"{lbl} (component)" if n.kind == "composable_node" else lbl)
+    out = refine(out, lambda n, lbl: f"{lbl} [{a}]" if (a := first_positional(n.arguments)) else lbl)
+    out = refine(out, lambda n, lbl: f"{lbl} (line {n.span.line})")
+    return refine(out, lambda n, lbl: f"{lbl} #{n.id}")
 
 
 def _param_value(params: dict[str, Any], name: str) -> Any:
@@ -140,6 +150,34 @@ def _param_value(params: dict[str, Any], name: str) -> Any:
     if getattr(p, "certain", True) is False:
         return None
     return getattr(p, "value", p)
+
+
+def _node_names(mgr: NodeInstance, params: dict[str, Any]) -> Any:
+    """``node_names`` of a manager. An unknown parameter source makes every parameter uncertain,
+    but launch_ros applies the sources in order and the last write wins, so a value from a launch
+    dict with no unknown source after it is known (nav2: ``[params_file, {'node_names': [...]}]``)."""
+    value = _param_value(params, "node_names")
+    if value is not None:
+        return value
+    p = params.get("node_names")
+    if p is None or getattr(p, "value", None) is None or getattr(p, "origin", None) is None:
+        return None
+    from physai_lint.resolve.model import ResolvedParamDict, ResolvedParamFile
+
+    last = None
+    for i, src in enumerate(mgr.param_sources):
+        if isinstance(src, ResolvedParamDict) and any(
+                prm.name == "node_names" and prm.span == p.origin for prm in src.params):
+            last = i
+    if last is None:
+        return None
+    for src in mgr.param_sources[last + 1:]:
+        if not (isinstance(src, ResolvedParamDict) or (isinstance(src, ResolvedParamFile)
+                                                       and src.status == "missing")):
+            return None  # a file or unknown source after it may set node_names again
+        if isinstance(src, ResolvedParamDict) and any(prm.name == "node_names" for prm in src.params):
+            return None
+    return p.value
 
 
 def _lifecycle_edges(nodes: list[NodeInstance], effective_params: Callable[[NodeInstance], dict[str, Any]]
@@ -155,7 +193,7 @@ def _lifecycle_edges(nodes: list[NodeInstance], effective_params: Callable[[Node
         if (mgr.package, mgr.executable) not in MANAGERS:
             continue
         try:
-            names = _param_value(effective_params(mgr), "node_names")
+            names = _node_names(mgr, effective_params(mgr))
         except (KeyError, TypeError, ValueError, OSError):  # unknown parameters: no edges
             names = None
         if not isinstance(names, list):
@@ -173,6 +211,23 @@ def _lifecycle_edges(nodes: list[NodeInstance], effective_params: Callable[[Node
                 for b in nxt:
                     if a != b:
                         out.append(PlanEdge(a, b, "lifecycle order", False, None, mgr.span))
+    return out
+
+
+def _container_edges(nodes: list[NodeInstance]) -> list[PlanEdge]:
+    """Components after their container, also when loaded by name (``LoadComposableNodes``
+    with ``target_container``) into a container started elsewhere in the launch."""
+    by_fqn: dict[str, list[str]] = {}
+    for n in nodes:
+        if n.fqn and (n.kind == "container" or (n.executable or "").startswith("component_container")):
+            by_fqn.setdefault(n.fqn, []).append(n.id)
+    ids = {n.id for n in nodes}
+    out = []
+    for n in nodes:
+        if n.kind != "composable_node":
+            continue
+        targets = [n.container_id] if n.container_id in ids else by_fqn.get(n.container or "", [])
+        out += [PlanEdge(c, n.id, "container", False, None, n.span) for c in targets if c and c != n.id]
     return out
 
 
@@ -236,7 +291,7 @@ def build_plan(launch: LaunchResult, graph: SystemGraph | None,
         if se.before in ids and se.after in ids and not se.soft and (se.before, se.after, se.reason) not in seen:
             seen.add((se.before, se.after, se.reason))
             hard.append(PlanEdge(se.before, se.after, se.reason, False, se.delay, se.span))
-    for e in _lifecycle_edges(nodes, effective_params):
+    for e in _container_edges(nodes) + _lifecycle_edges(nodes, effective_params):
         if (e.before, e.after, e.reason) not in seen and not any(
                 (e.before, e.after) == (h.before, h.after) for h in hard):
             seen.add((e.before, e.after, e.reason))

@@ -15,7 +15,9 @@ def _label(n: dict[str, Any]) -> str:
     (three ``spawner`` processes differ only by the controller they load)."""
     if n["fqn"]:
         return str(n["fqn"])
-    arg = next((a for a in n.get("arguments") or () if a and not a.startswith("-")), None)
+    from physai_lint.graph.plan import first_positional
+
+    arg = first_positional(tuple(n.get("arguments") or ()))
     return f"{n['package'] or '?'}/{n['executable'] or '?'}" + (f" [{arg}]" if arg else "")
 
 
@@ -27,6 +29,12 @@ def _dangling(doc: dict[str, Any]) -> dict[str, str]:
         elif not t["subscribers"]:
             out[t["name"]] = "no subscriber"
     return out
+
+
+def _containers(doc: dict[str, Any]) -> dict[str, str]:
+    """fqn -> id of the containers: container actions and Nodes running a component container."""
+    return {n["fqn"]: n["id"] for n in doc["nodes"] if n["fqn"] and (
+        n["kind"] == "container" or (n["executable"] or "").startswith("component_container"))}
 
 
 def render(doc: dict[str, Any], fmt: str) -> str:
@@ -93,11 +101,10 @@ def dot(doc: dict[str, Any]) -> str:
             out.append(f"  {_q(p)} -> {_q('t:' + t['name'])};")
         for s in t["subscribers"]:
             out.append(f"  {_q('t:' + t['name'])} -> {_q(s)};")
+    containers = _containers(doc)
     for n in doc["nodes"]:
-        if n.get("container"):
-            for c in doc["nodes"]:
-                if c["fqn"] == n["container"] and c["kind"] == "container":
-                    out.append(f"  {_q(c['id'])} -> {_q(n['id'])} [style=dotted, label=\"loads\"];")
+        if n.get("container") in containers:
+            out.append(f"  {_q(containers[n['container']])} -> {_q(n['id'])} [style=dotted, label=\"loads\"];")
     out.append("}")
     return "\n".join(out) + "\n"
 
@@ -129,7 +136,7 @@ def mermaid(doc: dict[str, Any]) -> str:
             out.append(f"  {_mid(p)} --> {tid}")
         for s in t["subscribers"]:
             out.append(f"  {tid} --> {_mid(s)}")
-    containers = {n["fqn"]: n["id"] for n in doc["nodes"] if n["kind"] == "container" and n["fqn"]}
+    containers = _containers(doc)
     for n in doc["nodes"]:
         if n.get("container") in containers:
             out.append(f"  {_mid(containers[n['container']])} -.->|loads| {_mid(n['id'])}")
@@ -153,7 +160,7 @@ def _vertices(doc: dict[str, Any]) -> tuple[list[Any], list[tuple[str, str, str]
     for t in doc["topics"]:
         edges += [("n:" + p, "t:" + t["name"], "pub") for p in t["publishers"]]
         edges += [("t:" + t["name"], "n:" + s, "sub") for s in t["subscribers"]]
-    containers = {n["fqn"]: n["id"] for n in doc["nodes"] if n["kind"] == "container" and n["fqn"]}
+    containers = _containers(doc)
     for n in doc["nodes"]:
         if n.get("container") in containers:
             edges.append(("n:" + containers[n["container"]], "n:" + n["id"], "loads"))
@@ -230,9 +237,10 @@ def page(doc: dict[str, Any]) -> str:
                      f'{e(t["name"])}{extra}</text></g>')
     title = e(doc["entries"][0]["file"])
     args = ", ".join(f"{k}:={'?' if v is None else v}" for k, v in doc["entries"][0]["arguments"].items())
-    summary = (f"{len(doc['nodes'])} nodes, {len(doc['topics'])} topics, {len(dangling)} dangling "
-               f"({', '.join(sorted(dangling)) or 'none'})")
-    return _PAGE.format(title=title, args=e(args), summary=e(summary), w=f"{lay.width:g}",
+    summary = f"{len(doc['nodes'])} nodes, {len(doc['topics'])} topics, {len(dangling)} dangling"
+    details = (f"<div>arguments: {e(args) or 'none'}</div><div>dangling: "
+               + (e(", ".join(f"{t} ({why})" for t, why in sorted(dangling.items()))) or "none") + "</div>")
+    return _PAGE.format(title=title, details=details, summary=e(summary), w=f"{lay.width:g}",
                         h=f"{lay.height:g}", svg="\n".join(parts))
 
 
@@ -247,6 +255,8 @@ body {{ display: flex; flex-direction: column; }}
 header {{ padding: 6px 12px; background: #223; color: #fff; font-size: 14px; }}
 header .sub {{ color: #bbc; font-size: 12px; }}
 header button {{ margin-left: 4px; min-width: 28px; }}
+header details {{ max-height: 30vh; overflow: auto; }}
+header summary {{ cursor: pointer; }}
 .legend span {{ margin-right: 12px; white-space: nowrap; }}
 .sw {{ display: inline-block; width: 12px; height: 12px; vertical-align: -2px; margin-right: 3px;
        border: 1px solid #335; }}
@@ -272,9 +282,9 @@ svg.focus .v, svg.focus .edge {{ opacity: 0.25; }}
 svg.focus .hl {{ opacity: 1; }}
 svg.focus .edge.hl {{ stroke: #247; stroke-width: 2.5; }}
 </style></head>
-<body><header><div><b>{title}</b> <span class="sub">{args}</span>
+<body><header><div><b>{title}</b>
 <span style="float:right"><button id="zin" title="zoom in (+)">+</button><button id="zout" title="zoom out (-)">&minus;</button><button id="zfit" title="fit (0)">fit</button></span></div>
-<div class="sub">{summary}</div>
+<details class="sub"><summary>{summary}</summary>{details}</details>
 <div class="sub legend"><span><i class="sw" style="background:#dde8ff"></i>node</span><span><i class="sw" style="background:#ffe9c7;border-color:#a60"></i>container / component</span><span><i class="sw" style="background:#fff;border-color:#585;border-radius:6px"></i>topic</span><span><i class="sw" style="background:#fff0f0;border:2px solid #d00;border-radius:6px"></i>dangling topic</span><span><i class="sw" style="background:#f0f3f8;border-style:dashed"></i>namespace</span><span>drag to pan, wheel to zoom, hover to follow a node</span></div></header>
 <svg id="graph" viewBox="0 0 {w} {h}" data-width="{w}" data-height="{h}" xmlns="http://www.w3.org/2000/svg">
 {svg}

@@ -86,3 +86,19 @@ def test_graph_html_structure(monkeypatch: pytest.MonkeyPatch) -> None:
     assert 'data-id="t:/nav/goal" data-dangling="no publisher"' in page
     assert 'data-id="t:/sensors/debug_image" data-dangling="no subscriber"' in page
     assert page.count('class="edge loads"') == 2  # the container loads two components
+
+
+def test_nav2_shaped_launch_gets_its_ordering_edges() -> None:
+    ws = HERE.parent / "plan_fixtures" / "nav_ws"
+    p, _ = compute_plan(CheckOptions(paths=[], workspace=str(ws)), "src/navbot/launch/nav.launch.py",
+                        cwd=str(ws))
+    lbl = p.labels
+    assert sorted(lbl.values()) == ["/amcl", "/lifecycle_manager_localization", "/map_server",
+                                    "/map_server (component)", "/nav_container"]  # no "[info]"
+    edges = {(lbl[e.before], lbl[e.after], e.reason) for e in p.edges if not e.soft}
+    assert ("/nav_container", "/amcl", "container") in edges  # loaded by container name
+    assert ("/map_server", "/amcl", "lifecycle order") in edges
+    # node_names comes after an unknown params file: the later dict wins, so it is known
+    assert ("/amcl", "/lifecycle_manager_localization", "lifecycle manager") in edges
+    stage = {lbl[v]: i for i, s in enumerate(p.stages, 1) for v in s}
+    assert stage["/lifecycle_manager_localization"] == 4

@@ -37,14 +37,15 @@ def include(inst: Instantiator, a: ir.Include, scope: Scope) -> None:
     fr = inst.frame
     path = inst.ev.eval(a.path, scope)
     args: list[tuple[str, str | None, object]] = []
+    # The arguments become SetLaunchConfiguration actions in the includer's scope, run in order
+    # before the description is visited, so an argument may read the ones before it.
     for arg in a.arguments or ():
-        args.append((arg.name, inst.ev.eval(arg.value, scope), arg.span))
+        value = inst.ev.eval(arg.value, scope)
+        args.append((arg.name, value, arg.span))
+        scope.configs[arg.name] = value
     rec = IncludeRecord(span=a.span, file=fr.file, target=path, target_source=None, status="unknown",
                         arguments=args, declared=None, active=fr.active)  # type: ignore[arg-type]
     inst.new_record(rec)
-    # The arguments are set in the includer's scope before the description is visited.
-    for name, value, _ in args:
-        scope.configs[name] = value
     if path is None:
         inst.result.opaque.append((a.span, "include of a file that cannot be known statically"))
         return

@@ -76,11 +76,15 @@ def test_cycle_plan_is_deadlock() -> None:
     assert len(p.cycles) == 1 and p.cycles[0].deadlock
     assert p.cycles[0].text(p.labels) == "listener -> talker -> listener"
     assert sum(len(s) for s in p.stages) == 2  # the cycle is condensed: still a plan
+    assert {p.labels[v] for v in p.never_starts} == {"listener", "talker"}
+    for fmt, mark in (("text", "NEVER STARTS"), ("mermaid", "linkStyle 0,1 stroke:#d00"),
+                      ("dot", "color=red"), ("json", '"never_starts": true')):
+        assert mark in render_plan(p, fmt, str(RULES)), fmt
 
 
 def test_root_chain_is_not_a_deadlock() -> None:
     p, _ = _plan(RULES / "S101-startup-cycle" / "good", "src/demo/launch/x.launch.py")
-    assert p.cycles == []
+    assert p.cycles == [] and p.never_starts == set()
 
 
 @pytest.mark.parametrize("fmt", FORMATS)

@@ -96,6 +96,7 @@ class Plan:
     critical_path: list[str] = field(default_factory=list)
     critical_delay: float = 0.0
     never_started: list[tuple[Span, str]] = field(default_factory=list)
+    never_starts: set[str] = field(default_factory=set)  # their handlers wait on events that never come
 
     @property
     def labels(self) -> dict[str, str]:
@@ -306,6 +307,7 @@ def build_plan(launch: LaunchResult, graph: SystemGraph | None,
 
     # ---- cycles among hard edges ------------------------------------------------------------------
     startable = _startable(ids, hard, {n.id: n.active for n in nodes})
+    plan.never_starts = ids - startable
     found: list[PlanCycle] = []
     for cyc in nx.simple_cycles(H):
         if len(found) >= MAX_CYCLES:

@@ -6,7 +6,7 @@ JSON (``"version": 1``)::
 
     {"version": 1, "entry": "src/.../x.launch.py",
      "vertices": [{"id", "label", "fqn", "kind", "package", "executable", "file", "line",
-                   "stage", "delay", "active"}],          # in stage order
+                   "stage", "delay", "active", "never_starts"}],          # in stage order
      "stages": [["n1", "n2"], ["n3"]],                  # vertex ids, stage 1 first
      "edges": [{"before", "after", "reason", "soft", "delay", "file", "line", "against"}],
      "cycles": [{"nodes": [...], "text": "a -> b -> a", "deadlock": bool, "file", "line"}],
@@ -112,14 +112,16 @@ def _waits(plan: Plan, vid: str, cwd: str) -> list[str]:
     return out
 
 
-def _vertex_line(v: PlanVertex, width: int, cwd: str) -> str:
+def _vertex_line(v: PlanVertex, width: int, cwd: str, never: bool = False) -> str:
     what = f"{v.package}/{v.executable}" if v.package else (v.executable or "?")
-    tags = []
+    tags = ["NEVER STARTS: the event it waits for never comes"] if never else []
     if v.kind != "node":
         tags.append(v.kind.replace("_", " "))
     if v.active is None:
         tags.append("conditional")
-    if v.delay:
+    if v.delay is not None and v.delay < 0:
+        tags.append(f"timer of {_secs(v.delay)}: negative")
+    elif v.delay:
         tags.append(f"timer +{_secs(v.delay)}")
     elif v.delay is None:
         tags.append("timer of unknown length")
@@ -146,7 +148,7 @@ def _text(plan: Plan, cwd: str) -> str:
         title = "starts with the launch" if i == 1 else f"after stage {i - 1}"
         tree = Tree(Text(f"Stage {i}: {title} ({len(stage)})"), guide_style="none")
         for vid in stage:
-            branch = tree.add(Text(_vertex_line(plan.vertices[vid], width, cwd)))
+            branch = tree.add(Text(_vertex_line(plan.vertices[vid], width, cwd, vid in plan.never_starts)))
             for line in _waits(plan, vid, cwd):
                 branch.add(Text(line))
         console.print()
@@ -179,7 +181,8 @@ def _json(plan: Plan, cwd: str) -> dict[str, Any]:
         "entry": _rel(plan.entry, cwd),
         "vertices": [{"id": v.id, "label": v.label, "fqn": v.fqn, "kind": v.kind, "package": v.package,
                       "executable": v.executable, "file": _rel(v.file, cwd), "line": v.line,
-                      "stage": v.stage, "delay": v.delay, "active": v.active} for v in verts],
+                      "stage": v.stage, "delay": v.delay, "active": v.active,
+                      "never_starts": v.id in plan.never_starts} for v in verts],
         "stages": plan.stages,
         "edges": [{"before": e.before, "after": e.after, "reason": e.reason, "soft": e.soft,
                    "delay": e.delay, "file": _rel(e.span.file, cwd) if e.span else None,
@@ -221,7 +224,8 @@ def _dot(plan: Plan) -> str:
             lbl = v.label + (f"\\n{v.package}/{v.executable}" if v.package else "")
             if v.delay:
                 lbl += f"\\n+{_secs(v.delay)}"
-            out.append(f"    {_q(vid)} [label=\"{lbl.replace(chr(34), chr(92) + chr(34))}\"];")
+            extra = ", color=red, style=dashed" if vid in plan.never_starts else ""
+            out.append(f"    {_q(vid)} [label=\"{lbl.replace(chr(34), chr(92) + chr(34))}\"{extra}];")
         out.append("  }")
     cyc_edges = {(e.before, e.after) for c in plan.cycles for e in c.edges}
     for e in plan.edges:
@@ -239,6 +243,13 @@ def _m(s: str) -> str:
     return '"' + s.replace('"', "#quot;") + '"'
 
 
+def order_key(plan: Plan, vid: str) -> tuple[int, int]:
+    for i, stage in enumerate(plan.stages):
+        if vid in stage:
+            return i, stage.index(vid)
+    return len(plan.stages), 0
+
+
 def _mermaid(plan: Plan) -> str:
     out = ["flowchart LR"]
     for i, stage in enumerate(plan.stages, 1):
@@ -250,7 +261,16 @@ def _mermaid(plan: Plan) -> str:
                 lbl += f"<br/>+{_secs(v.delay)}"
             out.append(f"    {vid}[{_m(lbl)}]")
         out.append("  end")
-    for e in plan.edges:
+    cyc_edges = {(e.before, e.after) for c in plan.cycles for e in c.edges}
+    red = []
+    for i, e in enumerate(plan.edges):
         arrow = "-.->" if e.soft else "-->"
         out.append(f"  {e.before} {arrow}|{_m(_edge_label(e))}| {e.after}")
+        if (e.before, e.after) in cyc_edges and not e.soft:
+            red.append(str(i))
+    if red:
+        out.append(f"  linkStyle {','.join(red)} stroke:#d00,stroke-width:2px")
+    if plan.never_starts:
+        out.append("  classDef never stroke:#d00,stroke-dasharray:4 3,color:#d00")
+        out.append("  class " + ",".join(sorted(plan.never_starts, key=lambda v: order_key(plan, v))) + " never")
     return "\n".join(out) + "\n"

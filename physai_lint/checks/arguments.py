@@ -2,9 +2,9 @@
 L103 argument-not-in-choices, L104 missing-required-argument."""
 from __future__ import annotations
 
-from typing import Iterator
+from collections.abc import Iterator
 
-from physai_lint.checks._util import suggestion
+from physai_lint.checks._util import relpath, suggestion
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic, Related
 
@@ -14,12 +14,21 @@ def undefined_configuration(ctx: CheckContext) -> Iterator[Diagnostic]:
     seen: set[object] = set()
     for launch in ctx.launches:
         declared = sorted({a.name for a in launch.declared_args})
+        # An include the linter cannot read may set any configuration (includes do not scope), so
+        # reads after it in the same file are unknown (autoware's agnocast_env sets container_package).
+        blind = [(r.span.file, r.span.line) for r in launch.includes
+                 if r.status not in ("ok", "cycle") and r.active is not False]
         for read in launch.config_reads:
             if read.defined or read.has_default or read.active is False or read.span in seen:
                 continue
+            if any(f == read.span.file and line < read.span.line for f, line in blind):
+                continue
             # A read in a file whose includer passed this name is fine; resolution saw it defined.
             seen.add(read.span)
-            hint = suggestion(read.name, declared)
+            later = next((a for a in launch.declared_args if a.name == read.name), None)
+            hint = (f"it is declared at {relpath(later.span.file)}:{later.span.line}, but that declaration "
+                    "does not reach this read (it runs later, or in a scope that does not include it)"
+                    if later is not None else suggestion(read.name, declared))
             yield Diagnostic(
                 "L101", read.span,
                 f'launch configuration "{read.name}" is read but never declared or set'

@@ -5,7 +5,7 @@ from typing import TYPE_CHECKING, Any
 
 from physai_lint.model.span import Span
 
-from . import symbolic
+from . import bounds, symbolic
 from .runtime import FileHandle, KPath, Opaque, SymStr, UserFunc
 
 if TYPE_CHECKING:
@@ -53,6 +53,8 @@ def call_builtin(ev: Evaluator, name: str, args: list[Any], kwargs: dict[str, An
     if name in _PURE and is_concrete(list(args)) and is_concrete(kwargs):
         if name == "sorted" and "key" in kwargs:
             return Opaque("sorted with a key function", span)
+        if name == "format" and any(bounds.wide_format(a) for a in [*args[1:], *kwargs.values()]):
+            return Opaque("format() result too large", span)
         try:
             return _PURE[name](*args, **kwargs)
         except Exception:  # noqa: BLE001
@@ -128,6 +130,8 @@ def str_format_join(ev: Evaluator, s: str, name: str, args: list[Any], kwargs: d
         items = iterate(ev, args[0]) if args else None
         if items is None:
             return Opaque("join of an unknown iterable", span)
+        if bounds.join_too_big(str(s), items):
+            return Opaque("join result too large", span)
         parts: list[Any] = []
         for i, item in enumerate(items):
             if i:
@@ -138,6 +142,9 @@ def str_format_join(ev: Evaluator, s: str, name: str, args: list[Any], kwargs: d
         if not all(symbolic.is_textlike(p) for p in parts):
             return Opaque("join of values that cannot be evaluated statically", span)
         return symbolic.join_parts(ev, parts, span)
+    if bounds.wide_format(str(s)) or any(isinstance(a, int) and a > bounds.MAX_WEIGHT
+                                         for a in [*args, *kwargs.values()]):
+        return Opaque("str.format result too large", span)
     if is_concrete(list(args)) and is_concrete(kwargs):
         try:
             return str(s).format(*args, **kwargs)

@@ -15,7 +15,7 @@ import yaml
 from physai_lint.model.span import Span
 from physai_lint.model.values import FindPackage, LaunchConfig, Text
 
-from . import api, builtin_calls, symbolic
+from . import api, bounds, builtin_calls, symbolic
 from .convert_values import to_value
 from .runtime import (
     BoundMethod,
@@ -37,6 +37,7 @@ if TYPE_CHECKING:
 _STR_METHODS = frozenset(
     ["capitalize", "casefold", "center", "count", "endswith", "expandtabs", "find", "index", "isalnum", "isalpha", "isascii", "isdecimal", "isdigit", "isidentifier", "islower", "isnumeric", "isspace", "istitle", "isupper", "ljust", "lower", "lstrip", "partition", "removeprefix", "removesuffix", "replace", "rfind", "rindex", "rjust", "rpartition", "rsplit", "rstrip", "split", "splitlines", "startswith", "strip", "swapcase", "title", "upper", "zfill"])
 _LIST_METHODS = frozenset(["append", "extend", "insert", "pop", "index", "count", "copy", "remove", "reverse", "clear"])
+_GROWING = frozenset(["append", "extend", "insert", "update", "setdefault"])
 _DICT_METHODS = frozenset(["items", "keys", "values", "get", "update", "copy", "pop", "setdefault"])
 _KNOWN_MODULES = frozenset(["os", "os.path", "sys", "json", "yaml", "pathlib", "math", "re", "typing", "functools", "itertools", "ament_index_python", "tempfile", "xacro", "subprocess", "shutil", "glob", "collections", "launch_ros", "launch", "launch_xml", "launch_yaml", "ament_index_python.packages"])
 
@@ -280,7 +281,12 @@ def call_method(ev: Evaluator, obj: Any, name: str, args: list[Any], kwargs: dic
     if isinstance(obj, str) and name in ("format", "join"):
         return builtin_calls.str_format_join(ev, obj, name, args, kwargs, span)
     if isinstance(obj, str) and name in _STR_METHODS and is_concrete(list(args)) and is_concrete(kwargs):
+        if bounds.str_method_too_big(str(obj), name, list(args)):
+            return Opaque(f"str.{name} result too large", span)
         return _safe(getattr(str(obj), name), args, kwargs, span)
+    if isinstance(obj, (list, dict)) and name in _GROWING and \
+            len(obj) + sum(ev.bounds.weight(a) for a in [*args, *kwargs.values()]) > bounds.MAX_WEIGHT:
+        return Opaque(f"{name} makes the value too large to analyse", span)
     if isinstance(obj, list) and name in _LIST_METHODS:
         if name == "extend" and args and not isinstance(args[0], (list, tuple, dict, str)):
             obj.append(Opaque("extend with an unknown iterable", span))

@@ -13,7 +13,7 @@ from typing import Any
 from physai_lint.model.launch import Condition
 from physai_lint.model.span import Span
 
-from . import calls, symbolic
+from . import bounds, calls, symbolic
 from .core import (
     BUILTIN_NAMES,
     MAX_DEPTH,
@@ -46,6 +46,7 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
         self.main = ModuleCtx(path, SpanMaker(path, text), "")
         self.steps = 0
         self.depth = 0
+        self.bounds = bounds.SizeGuard()
         self.cond_stack: list[CondTag] = []
         self.pending: list[list[Any]] = []
         self.frame_tags: list[int] = []
@@ -84,10 +85,14 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
     def st_AugAssign(self, s: ast.AugAssign, scope: Scope) -> None:
         cur = self.ev(s.target, scope) if not isinstance(s.target, ast.Attribute) else Opaque("attribute")
         rhs = self.ev(s.value, scope)
-        if isinstance(s.op, ast.Add) and isinstance(cur, list) and isinstance(rhs, (list, tuple)):
+        if isinstance(s.op, ast.Add) and isinstance(cur, list) and isinstance(rhs, (list, tuple)) \
+                and len(cur) + self.bounds.weight(rhs) <= bounds.MAX_WEIGHT:
             cur.extend(rhs)  # in place, like list.__iadd__
             return
-        self.assign(s.target, self.binop(s.op, cur, rhs, s, scope), scope)
+        value = self.binop(s.op, cur, rhs, s, scope)
+        if self.bounds.too_big(value):
+            value = Opaque("value too large to analyse", self.span(s, scope))
+        self.assign(s.target, value, scope)
 
     def assign(self, t: ast.expr, value: Any, scope: Scope) -> None:
         if isinstance(t, ast.Name):

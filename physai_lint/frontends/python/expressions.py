@@ -10,18 +10,25 @@ from typing import Any
 from physai_lint.model.span import Span
 
 from . import calls, symbolic
+from .bounds import SizeGuard
 from .core import BINOPS, BUILTIN_NAMES, CMPOPS, MAX_LOOP, Abort, Scope, is_concrete, truth
 from .runtime import Opaque, Ref, SStr, SymBool
 
 
 class ExpressionsMixin:
+    bounds: SizeGuard
+
     # ---- expressions ----------------------------------------------------------------------
     def ev(self, node: ast.expr, scope: Scope) -> Any:
         self.tick()
         handler = getattr(self, "ex_" + type(node).__name__, None)
         if handler is None:
             return Opaque(f"unsupported expression ({type(node).__name__})", self.span(node, scope))
-        return handler(node, scope)
+        result = handler(node, scope)
+        # A name gives back a value weighed when it was built (in-place growth is checked in calls).
+        if not isinstance(node, ast.Name) and self.bounds.too_big(result):
+            return Opaque("value too large to analyse", self.span(node, scope))
+        return result
 
     def ex_Constant(self, n: ast.Constant, scope: Scope) -> Any:
         if isinstance(n.value, str):
@@ -91,7 +98,7 @@ class ExpressionsMixin:
             return sym
         if not (is_concrete(left) and is_concrete(right)):
             return Opaque("operation on values that cannot be evaluated statically", span)
-        if isinstance(op, (ast.Mult, ast.Pow, ast.LShift)) and not symbolic.small_enough(op, left, right):
+        if isinstance(op, (ast.Mult, ast.Pow, ast.LShift, ast.Mod)) and not symbolic.small_enough(op, left, right):
             return Opaque("result too large", span)
         try:
             result = BINOPS[type(op)](left, right)

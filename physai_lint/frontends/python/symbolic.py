@@ -10,7 +10,7 @@ from physai_lint.model.launch import ConcatFact
 from physai_lint.model.span import Span
 from physai_lint.model.values import BoolOp, Compare, IfElse, PathJoin, Value
 
-from . import api
+from . import api, bounds
 from .convert_values import to_value
 from .runtime import KPath, LObj, Opaque, SymBool, SymStr
 
@@ -97,11 +97,15 @@ def small_enough(op: ast.operator, left: Any, right: Any) -> bool:
         for a, b in ((left, right), (right, left)):
             if isinstance(a, (str, bytes, list, tuple)) and isinstance(b, int):
                 return len(a) * b <= MAX_SIZE
-        return True
+        return not bounds.int_op_too_big("mul", left, right)
     if isinstance(op, ast.Pow):
-        return not (isinstance(right, int) and right > 256)
+        return not (isinstance(right, int) and right > 256) and not bounds.int_op_too_big("pow", left, right)
     if isinstance(op, ast.LShift):
-        return not (isinstance(right, int) and right > 4096)
+        return not (isinstance(right, int) and right > 4096) and not bounds.int_op_too_big("lshift", left, right)
+    if isinstance(op, ast.Mod) and isinstance(left, str):
+        star_args = right if isinstance(right, tuple) else (right,)
+        return not (bounds.wide_format(left) or "*" in left and any(
+            isinstance(a, int) and a > bounds.MAX_WEIGHT for a in star_args))
     return True
 
 
@@ -151,6 +155,8 @@ def format_value(rec: Recorder, x: Any, conversion: int, spec: Any, span: Span) 
         return x.path
     if not isinstance(spec, str):
         return Opaque("f-string with an unknown format spec", span)
+    if bounds.wide_format(spec):
+        return Opaque("f-string field too wide", span)
     try:
         if conversion == ord("r"):
             x = repr(x)

@@ -54,7 +54,7 @@ def missing_gld(ctx: CheckContext) -> Iterator[Diagnostic]:
 
     for path in sorted(ctx.launch_files):
         facts = ctx.launch_files[path].python
-        if facts is None or facts.has_generate_launch_description:
+        if facts is None or facts.has_generate_launch_description or facts.is_launch_test:
             continue
         yield Diagnostic(
             "L006", Span.point(path, 1),

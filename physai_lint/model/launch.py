@@ -332,6 +332,8 @@ class PythonFacts:
     undefined_names: tuple[NameFact, ...] = ()
     concatenations: tuple[ConcatFact, ...] = ()
     has_generate_launch_description: bool = True
+    # Defines generate_test_description(): a launch_testing file, run by `launch_test`, not `ros2 launch`.
+    is_launch_test: bool = False
 
 
 @dataclass(frozen=True, slots=True)

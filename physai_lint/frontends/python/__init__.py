@@ -101,7 +101,10 @@ def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | N
     except RecursionError:
         calls, names = (), ()
     concats = tuple(sorted(ev.concats.values(), key=lambda c: (c.span.line, c.span.col, c.how)))
-    facts = PythonFacts(calls, names, concats, has_gld)
+    # launch_testing files (`launch_test FILE`) define generate_test_description instead.
+    is_test = any(isinstance(n, (ast.FunctionDef, ast.AsyncFunctionDef)) and n.name == "generate_test_description"
+                  for n in tree.body)
+    facts = PythonFacts(calls, names, concats, has_gld, is_test)
     launch = LaunchFile(path, "python", actions, python=facts, read_files=tuple(ev.read_files))
     convert_values.set_recorder(None)
     return FrontendResult(launch=launch, diagnostics=[])

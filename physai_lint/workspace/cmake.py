@@ -250,12 +250,13 @@ class _Interp:
             if text is None:
                 return
             self.subdirs += 1
-            saved = self.vars["CMAKE_CURRENT_SOURCE_DIR"]
+            # A subdirectory runs in a copy of the parent's variable scope: its set() and project()
+            # (PROJECT_NAME!) do not come back (set(... PARENT_SCOPE) aside, which we do not model).
+            saved_vars = dict(self.vars)
             self.vars["CMAKE_CURRENT_SOURCE_DIR"] = sub
             self.vars["CMAKE_CURRENT_LIST_DIR"] = sub
             self.run(tokenize(text), path.replace(os.sep, "/"), depth + 1)
-            self.vars["CMAKE_CURRENT_SOURCE_DIR"] = saved
-            self.vars["CMAKE_CURRENT_LIST_DIR"] = saved
+            self.vars = saved_vars
         elif name in self.functions and any(c.name == "install" for c in self.functions[name]):
             self.info.complete = False
             self.info.executables_complete = False

@@ -130,3 +130,17 @@ def test_glob_files():
     assert glob_files("launch/**/*.py", files, recursive=False) == ["launch/sub/c.launch.py"]
     assert glob_files("./config/x.yaml", files) == ["config/x.yaml"]
     assert glob_files("launch/.*", files) == ["launch/.d.launch.py"]
+
+
+def test_cmake_subdirectory_scope_does_not_leak_project_name(tmp_path):
+    # slam_toolbox-style: a vendored library with its own project() in a subdirectory must not
+    # rename the parent's ${PROJECT_NAME} (CMake gives a subdirectory a copy of the scope).
+    (tmp_path / "lib/sdk").mkdir(parents=True)
+    (tmp_path / "lib/sdk/CMakeLists.txt").write_text(
+        "project(sdk)\nset(EXTRA yes)\ninstall(DIRECTORY include/ DESTINATION include)\n")
+    info = _cmake(tmp_path, "project(pkg)\nadd_subdirectory(lib/sdk)\n"
+                            "add_executable(node_a src/a.cpp)\n"
+                            "install(TARGETS node_a RUNTIME DESTINATION lib/${PROJECT_NAME})\n"
+                            "install(DIRECTORY config DESTINATION share/${PROJECT_NAME})\n")
+    assert info.executables == {"node_a"}
+    assert ("share/pkg", str(tmp_path / "config")) in [(r.dest, r.source) for r in info.rules]

@@ -159,6 +159,64 @@ class FileContent:
     span: Span | None = None
 
 
+# ---- nav2_common.launch helpers (data-only substitutions, modelled as nav2 implements them) ----
+
+
+@dataclass(frozen=True, slots=True)
+class Rewrite:
+    """One entry of a ``RewrittenYaml``/``ReplaceString`` dict: a literal key and its value."""
+
+    key: str
+    value: "Value"
+    span: Span | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class RewrittenYaml:
+    """``nav2_common.launch.RewrittenYaml``: the path of a temporary params file that is
+    ``yaml.dump`` of the rewritten ``yaml.safe_load`` of ``path``. A dict given as something that
+    cannot be evaluated statically is ``None``; ``convert_types`` is ``None`` when unknown."""
+
+    path: "Value"
+    param_rewrites: tuple[Rewrite, ...] | None
+    root_key: "Value | None" = None
+    key_rewrites: tuple[Rewrite, ...] | None = ()
+    value_rewrites: tuple[Rewrite, ...] | None = ()
+    convert_types: bool | None = False
+    span: Span | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class ReplaceString:
+    """``nav2_common.launch.ReplaceString``: a temporary copy of ``path`` with every key replaced
+    line by line; ``condition`` ("if"/"unless", value) false -> the source path itself."""
+
+    path: "Value"
+    replacements: tuple[Rewrite, ...] | None
+    condition: "tuple[str, Value] | None" = None
+    span: Span | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class LaunchConfigAsBool:
+    """``nav2_common.launch.LaunchConfigAsBool(name)``: "True" when the configuration's value
+    ``.strip().lower()`` is one of true/1/yes/on, else "False". ``name`` holds the
+    ``LaunchConfig`` it reads."""
+
+    name: "Value"
+    span: Span | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class HasNodeParams:
+    """``nav2_common.launch.HasNodeParams``: "True" when ``yaml.safe_load`` of ``path`` is a dict
+    with the top-level key ``node_name``."""
+
+    path: "Value"
+    node_name: str | None
+    span: Span | None = None
+
+
 @dataclass(frozen=True, slots=True)
 class Unknown:
     """Something that cannot be known statically. Rules stay silent on it."""
@@ -170,6 +228,7 @@ class Unknown:
 Subst = Union[
     Text, LaunchConfig, EnvVar, FindPackage, ExecInPackage, FindExecutable, PathJoin, ThisFileDir,
     ThisFile, Command, PythonExpr, Anon, BoolOp, Compare, IfElse, ParamRef, FileContent, Unknown,
+    RewrittenYaml, ReplaceString, LaunchConfigAsBool, HasNodeParams,
 ]
 Value = tuple[Subst, ...]
 

@@ -54,6 +54,8 @@ class EffectiveParam:
 
 
 def _file_for(src: ResolvedParamFile, files: Mapping[str, ParamFileModel]) -> ParamFileModel | None:
+    if src.model is not None:
+        return src.model  # type: ignore[no-any-return]
     for p in (src.path, src.source):
         if p and p in files:
             return files[p]

@@ -113,4 +113,4 @@ class RclParams:
             elif tag == "rename":
                 self.rename(op[1])
             elif tag == "set":
-                self.set(op[1], op[2], op[3], source)
+                self.set(op[1], op[2], op[3], source, unknown=op[1] == "unknown")

@@ -75,6 +75,8 @@ class Evaluator:
         self.on_package = on_package
         self.on_bad_condition = on_bad_condition
         self.on_dirname: Callable[[Span | None, Scope], None] | None = None
+        # temporary files that substitutions (nav2_common RewrittenYaml ...) write: path -> file
+        self.virtual: dict[str, Any] = {}
 
     def eval(self, value: v.Value | None, scope: Scope) -> str | None:
         if value is None:
@@ -134,6 +136,10 @@ class Evaluator:
                 self.eval(p.else_value, scope)
                 return None
             return self.eval(p.if_value if truth else p.else_value, scope)
+        if isinstance(p, (v.RewrittenYaml, v.ReplaceString, v.LaunchConfigAsBool, v.HasNodeParams)):
+            from physai_lint.resolve import nav2_common
+
+            return nav2_common.evaluate(self, p, scope)
         if isinstance(p, (v.EnvVar, v.ParamRef, v.FileContent, v.Anon)):
             for sub in (getattr(p, "name", None), getattr(p, "default", None), getattr(p, "path", None)):
                 if sub is not None:

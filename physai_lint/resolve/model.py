@@ -5,7 +5,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Literal, Union
+from typing import Any, Literal, Union
 
 from physai_lint.model.findings import Diagnostic
 from physai_lint.model.launch import ComposableNode, NodeAction
@@ -45,6 +45,10 @@ class ResolvedParamFile:
     span: Span
     origin: Literal["global", "node"]
     allow_substs: bool = False
+    # A temporary file a substitution writes (nav2_common RewrittenYaml/ReplaceString): the model
+    # rcl reads from it, positions mapped back to the source YAML; ``derived_from`` is that source.
+    model: Any = field(default=None, compare=False, repr=False)
+    derived_from: str | None = None
 
 
 @dataclass(frozen=True, slots=True)

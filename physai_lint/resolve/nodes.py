@@ -81,9 +81,25 @@ class NodeBuilder:
                 params.append(ResolvedParamDict((_cli_typed(rp),), span, "global", "/**"))
             else:
                 _, path, _, span = item
-                source, status = self._locate(path)
-                params.append(ResolvedParamFile(path, source, status, span, "global"))  # type: ignore[arg-type]
+                params.append(self._file(path, span, "global", False, scope))
         return remaps, params
+
+    def _file(self, path: str | None, span: Span, origin: str, allow_substs: bool, scope: Scope
+              ) -> ParamSourceR:
+        """A params file source; a temporary file written by a substitution carries its model."""
+        virtual = self.inst.ev.virtual.get(path) if path is not None else None
+        if virtual is not None:
+            from physai_lint.resolve.nav2_common import with_substitutions
+
+            distro = getattr(self.inst.packages, "distro", "humble")
+            if allow_substs:
+                virtual = with_substitutions(self.inst.ev, virtual, scope)
+            model = virtual.param_model(distro) if virtual is not None else None
+            status = "ok" if model is not None else "unknown"
+            return ResolvedParamFile(path, None, status, span, origin, allow_substs,  # type: ignore[arg-type]
+                                     model=model, derived_from=virtual.source if virtual else None)
+        source, status = self._locate(path)
+        return ResolvedParamFile(path, source, status, span, origin, allow_substs)  # type: ignore[arg-type]
 
     def _own_params(self, sources: tuple[ir.ParamSource, ...], scope: Scope, key: str
                     ) -> list[ParamSourceR]:
@@ -91,9 +107,7 @@ class NodeBuilder:
         for src in sources:
             if isinstance(src, ir.ParamFile):
                 path = self.inst.ev.eval(src.path, scope)
-                source, status = self._locate(path)
-                out.append(ResolvedParamFile(path, source, status, src.span, "node",  # type: ignore[arg-type]
-                                             src.allow_substs))
+                out.append(self._file(path, src.span, "node", src.allow_substs, scope))
             elif isinstance(src, ir.ParamDict):
                 params = tuple(resolve_pvalue(e.name, e.value, lambda x: self.inst.ev.eval(x, scope),
                                               e.span) for e in src.entries)

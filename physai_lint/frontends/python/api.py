@@ -5,7 +5,7 @@ Names are canonicalised to ``<root>.<subpackage>.<Name>`` (``launch_ros.actions.
 """
 from __future__ import annotations
 
-ROOTS = ("launch", "launch_ros", "launch_xml", "launch_yaml")
+ROOTS = ("launch", "launch_ros", "launch_xml", "launch_yaml", "nav2_common")
 
 _ACTIONS_LAUNCH = (
     "DeclareLaunchArgument SetLaunchConfiguration IncludeLaunchDescription GroupAction ExecuteProcess "
@@ -37,6 +37,10 @@ KNOWN |= {f"launch.conditions.{n}" for n in _CONDITIONS.split()}
 KNOWN |= {f"launch.event_handlers.{n}" for n in _HANDLERS_LAUNCH.split()}
 KNOWN |= {"launch_ros.event_handlers.OnStateTransition"}
 KNOWN |= {f"launch.launch_description_sources.{n}" for n in _SOURCES.split()}
+# nav2_common.launch: substitutions nav2 and the robots built on it use (modelled as data)
+NAV2_SUBSTITUTIONS = frozenset(
+    f"nav2_common.launch.{n}" for n in ("RewrittenYaml", "ReplaceString", "LaunchConfigAsBool", "HasNodeParams"))
+KNOWN |= NAV2_SUBSTITUTIONS
 KNOWN |= {
     "launch_xml.launch_description_sources.XMLLaunchDescriptionSource",
     "launch_yaml.launch_description_sources.YAMLLaunchDescriptionSource",
@@ -102,7 +106,7 @@ def short(qual: str) -> str:
 
 
 def is_substitution(qual: str) -> bool:
-    return ".substitutions." in qual or qual.endswith(".ParameterValue")
+    return ".substitutions." in qual or qual.endswith(".ParameterValue") or qual in NAV2_SUBSTITUTIONS
 
 
 ACTION_KINDS = {

@@ -128,7 +128,45 @@ def subst(o: LObj) -> V.Subst:
         return V.ParamRef(_val(o, 0, "name"), s)
     if n == "FileContent":
         return V.FileContent(_val(o, 0, "path"), s)
+    if o.qual in api.NAV2_SUBSTITUTIONS:
+        return _nav2(o, n, s)
     return V.Unknown(f"substitution {n} cannot be evaluated statically", s)
+
+
+def _rewrites(o: LObj, pos: int, name: str) -> tuple[V.Rewrite, ...] | None:
+    """A ``dict[str, SomeSubstitutionsType]`` argument as literal keys and values (None: unknown)."""
+    d = o.arg(pos, name)
+    if d is None:
+        return ()
+    if not isinstance(d, dict) or not all(isinstance(k, str) for k in d):
+        return None
+    spans = item_spans(d) if isinstance(item_spans(d), dict) else {}
+    out = []
+    for k, val in d.items():
+        _kspan, vspan = spans.get(k, (o.arg_span(pos, name),) * 2)
+        out.append(V.Rewrite(str(k), to_value(val, vspan), vspan))
+    return tuple(out)
+
+
+def _nav2(o: LObj, n: str, s: Span) -> V.Subst:
+    if n == "LaunchConfigAsBool":
+        name = _val(o, 0, "name")
+        return V.LaunchConfigAsBool((V.LaunchConfig(name, None, s),), s)
+    if n == "HasNodeParams":
+        node = o.arg(1, "node_name")
+        return V.HasNodeParams(_val(o, 0, "source_file"), str(node) if isinstance(node, str) else None, s)
+    if n == "ReplaceString":
+        cond = o.arg(2, "condition")
+        condition = None
+        if cond is not None:
+            c = to_condition(cond, o.arg_span(2, "condition"))
+            condition = (c.kind, c.value) if c is not None else None
+        return V.ReplaceString(_val(o, 0, "source_file"), _rewrites(o, 1, "replacements"), condition, s)
+    convert = o.arg(5, "convert_types", False)
+    return V.RewrittenYaml(
+        _val(o, 0, "source_file"), _rewrites(o, 1, "param_rewrites"), opt_value(o, 2, "root_key"),
+        _rewrites(o, 3, "key_rewrites"), _rewrites(o, 4, "value_rewrites"),
+        convert if isinstance(convert, bool) else None, s)
 
 
 def to_condition(c: Any, span: Span) -> Condition | None:

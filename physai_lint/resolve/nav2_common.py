@@ -1,0 +1,554 @@
+"""The ``nav2_common.launch`` substitutions, as nav2 implements them, over data only.
+
+``RewrittenYaml`` (``nav2_common/launch/rewritten_yaml.py :: perform``): ``yaml.safe_load`` the
+source, rewrite leaf keys anywhere and dotted paths (``substitute_params``), add missing paths that
+contain ``ros__parameters`` (``add_params``), rename keys (``substitute_keys``), replace values by
+their ``str()`` (``substitute_values``), wrap under a non-empty ``root_key``, then ``yaml.dump`` the
+result to a temporary file that rcl parses again. We run the same steps on the loaded data and
+re-parse the dumped text with our rcl loader, so PyYAML's YAML 1.1 typing of the source and rcl's
+typing of the dump both apply (``"y"`` quoted in the source is dumped plain and read as a bool,
+``1_000`` becomes 1000, an empty value becomes the string "null" ...). Positions are mapped back to
+the source YAML (or to the rewrite in the launch file). A rewrite value that is unknown makes the
+values it writes unknown; an unknown source, root key, key rewrite or dict makes the file unknown.
+
+``ReplaceString`` replaces strings line by line; ``HasNodeParams`` tests a top-level key;
+``LaunchConfigAsBool`` maps true/1/yes/on to "True" and anything else to "False".
+"""
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
+
+import yaml
+
+from physai_lint.model import values as v
+from physai_lint.model.span import Span
+
+if TYPE_CHECKING:
+    from physai_lint.params.model import ParamFileModel
+    from physai_lint.resolve.evaluate import Evaluator, Scope
+
+VIRTUAL_DIR = "/tmp/physai-lint-virtual"
+UNKNOWN_PREFIX = "__physai_lint_unknown_value_"
+MAX_SOURCE = 2_000_000
+TRUE_WORDS = ("true", "1", "yes", "on")
+
+
+@dataclass
+class VirtualFile:
+    """A temporary file a substitution writes at launch time: its text, where each position of
+    it comes from (``(line, col)`` -> span), and the span to use for anything else."""
+
+    path: str
+    text: str
+    origin: dict[tuple[int, int], Span]
+    fallback: Span
+    source: str | None  # the workspace file it was made from
+    line_origin: Callable[[int, int], Span | None] | None = None
+    models: dict[str, ParamFileModel | None] = field(default_factory=dict)
+
+    def span_of(self, line: int, col: int) -> Span:
+        hit = self.origin.get((line, col))
+        if hit is not None:
+            return hit
+        if self.line_origin is not None:
+            got = self.line_origin(line, col)
+            if got is not None:
+                return got
+        return self.fallback
+
+    def param_model(self, distro: str) -> ParamFileModel | None:
+        """The model rcl builds from this file, spans mapped back; None when unknown."""
+        if distro not in self.models:
+            self.models[distro] = _param_model(self, distro)
+        return self.models[distro]
+
+
+# ---- reading the source -----------------------------------------------------------------------
+
+
+class _RecordingLoader(yaml.SafeLoader):
+    """PyYAML's SafeLoader, remembering which node made which object (to keep positions)."""
+
+    def __init__(self, stream: str) -> None:
+        super().__init__(stream)
+        self.made: dict[int, tuple[Any, Any]] = {}
+
+    def construct_object(self, node: Any, deep: bool = False) -> Any:
+        obj = super().construct_object(node, deep)
+        self.made[id(node)] = (node, obj)
+        return obj
+
+
+def _mark_span(file: str, node: Any) -> Span:
+    sm, em = node.start_mark, node.end_mark
+    end = (em.line + 1, em.column + 1)
+    if end <= (sm.line + 1, sm.column + 1):
+        end = (sm.line + 1, sm.column + 2)
+    return Span(file, sm.line + 1, sm.column + 1, end[0], end[1])
+
+
+def _load(text: str, path: str, span_of: Callable[[Any], Span]
+          ) -> tuple[Any, dict[int, dict[Any, tuple[Span, Span]]]] | None:
+    """``yaml.safe_load`` of ``text`` plus, per container object id, key -> (key span, value span)."""
+    loader = _RecordingLoader(text)
+    try:
+        node = loader.get_single_node()
+        data = loader.construct_document(node) if node is not None else None
+    except (yaml.YAMLError, ValueError, TypeError, RecursionError, MemoryError):
+        return None
+    finally:
+        loader.dispose()
+    spans: dict[int, dict[Any, tuple[Span, Span]]] = {}
+    seen: set[int] = set()
+
+    def walk(n: Any) -> None:
+        if id(n) in seen:
+            return
+        seen.add(id(n))
+        obj = loader.made.get(id(n), (None, None))[1]
+        if isinstance(n, yaml.MappingNode) and isinstance(obj, dict):
+            table = spans.setdefault(id(obj), {})
+            for kn, vn in n.value:
+                key = loader.made.get(id(kn), (None, None))[1]
+                try:
+                    table[key] = (span_of(kn), span_of(vn))
+                except TypeError:  # unhashable key: PyYAML would have failed already
+                    continue
+                walk(vn)
+        elif isinstance(n, yaml.SequenceNode) and isinstance(obj, list):
+            table = spans.setdefault(id(obj), {})
+            for i, item in enumerate(n.value):
+                table[i] = (span_of(item), span_of(item))
+                walk(item)
+
+    if node is not None:
+        walk(node)
+    return data, spans
+
+
+# ---- RewrittenYaml, step by step as nav2 writes it ----------------------------------------------
+
+
+class _Rewriter:
+    def __init__(self, convert_types: bool, spans: dict[int, dict[Any, tuple[Span, Span]]],
+                 rewrite_spans: dict[str, Span]) -> None:
+        self.convert_types = convert_types
+        self.spans = spans
+        self.rewrite_spans = rewrite_spans
+
+    def _set(self, d: Any, key: Any, value: Any, span: Span | None) -> None:
+        d[key] = value
+        if span is not None and isinstance(d, (dict, list)):
+            old = self.spans.setdefault(id(d), {}).get(key)
+            self.spans[id(d)][key] = (old[0] if old else span, span)
+
+    def convert(self, text_value: str) -> Any:
+        if self.convert_types:
+            try:
+                return float(text_value) if "." in text_value else int(text_value)
+            except ValueError:
+                pass
+        if text_value.lower() == "true":
+            return True
+        if text_value.lower() == "false":
+            return False
+        return text_value
+
+    def leaf_keys(self, data: Any) -> Any:
+        if not isinstance(data, dict):
+            return
+        for key, child in data.items():
+            if isinstance(child, dict):
+                yield from self.leaf_keys(child)
+            yield data, key
+
+    def pathify(self, d: Any, p: str | None = None, paths: dict[str, Any] | None = None) -> dict[str, Any]:
+        if p is None:
+            paths = {}
+            self.pathify(d, "", paths)
+            return paths
+        assert paths is not None
+        pn = p + "." if p != "" else p
+        if isinstance(d, dict):
+            for k, x in d.items():
+                self.pathify(x, str(pn) + str(k), paths)
+        elif isinstance(d, list):
+            for idx, e in enumerate(d):
+                self.pathify(e, pn + str(idx), paths)
+        else:
+            paths[p] = d
+        return paths
+
+    def update_path(self, data: Any, keys: list[str], value: Any, span: Span | None) -> Any:
+        for key in keys:
+            if key == keys[-1]:
+                self._set(data, key, value, span)
+                break
+            key = keys.pop(0)
+            if isinstance(data, list):
+                data[int(key)] = self.update_path(data[int(key)], keys, value, span)
+            else:
+                data[key] = self.update_path(data.get(key, {}), keys, value, span)
+        return data
+
+    def substitute_params(self, data: Any, rewrites: dict[str, str]) -> None:
+        for d, key in list(self.leaf_keys(data)):
+            if key in rewrites:
+                self._set(d, key, self.convert(rewrites[key]), self.rewrite_spans.get(key))
+        for path in self.pathify(data):
+            if path in rewrites:
+                data = self.update_path(data, path.split("."), self.convert(rewrites[path]),
+                                        self.rewrite_spans.get(path))
+
+    def add_params(self, data: Any, rewrites: dict[str, str]) -> None:
+        paths = self.pathify(data)
+        for path in rewrites:  # noqa: PLC0206 - mirrors nav2 (keys snapshot, dict mutated)
+            if path not in paths:
+                keys = path.split(".")
+                if "ros__parameters" in keys:
+                    data = self.update_path(data, keys, self.convert(rewrites[path]),
+                                            self.rewrite_spans.get(path))
+
+    def substitute_keys(self, data: Any, rewrites: dict[str, str]) -> None:
+        if len(rewrites) != 0:
+            for key in list(data.keys()):
+                val = data[key]
+                if key in rewrites:
+                    new_key = rewrites[key]
+                    data[new_key] = data[key]
+                    old = self.spans.get(id(data), {}).get(key)
+                    if old is not None:
+                        self.spans[id(data)][new_key] = old
+                    del data[key]
+                if isinstance(val, dict):
+                    self.substitute_keys(val, rewrites)
+
+    def substitute_values(self, data: Any, rewrites: dict[str, str]) -> None:
+        def process(value: Any) -> Any:
+            if isinstance(value, dict):
+                for k, x in list(value.items()):
+                    new = process(x)
+                    if new is not x and str(x) in rewrites and not isinstance(x, (dict, list)):
+                        self._set(value, k, new, self.rewrite_spans.get("=" + str(x)))
+                    else:
+                        value[k] = new
+                return value
+            if isinstance(value, list):
+                out = [process(x) for x in value]
+                table = self.spans.get(id(value))
+                if table is not None:
+                    self.spans[id(out)] = dict(table)
+                return out
+            if str(value) in rewrites:
+                return self.convert(rewrites[str(value)])
+            return value
+
+        for key in list(data.keys()):
+            data[key] = process(data[key])
+
+
+# ---- evaluation ---------------------------------------------------------------------------------
+
+
+def _read_source(ev: Evaluator, path: str) -> tuple[str, str, VirtualFile | None] | None:
+    """(text, file for spans, the virtual file it is) of a file a substitution opens."""
+    virtual = ev.virtual.get(path)
+    if virtual is not None:
+        return virtual.text, virtual.path, virtual
+    pk = ev.packages
+    if pk is None:
+        return None
+    loc = pk.locate(path)
+    if loc.status != "ok":
+        return None
+    real = loc.source or path
+    text = pk.read_text(real)
+    if text is None or len(text) > MAX_SOURCE:
+        return None
+    return text, real, None
+
+
+def _node_spans(file: str, virtual: VirtualFile | None) -> Callable[[Any], Span]:
+    if virtual is None:
+        return lambda n: _mark_span(file, n)
+    return lambda n: virtual.span_of(n.start_mark.line + 1, n.start_mark.column + 1)
+
+
+def _rewrites(ev: Evaluator, items: tuple[v.Rewrite, ...], scope: Scope, counter: list[int],
+              unknowns: bool) -> tuple[dict[str, str], dict[str, Span]] | None:
+    """Evaluated rewrites; an unknown value becomes a placeholder when ``unknowns`` allows it."""
+    out: dict[str, str] = {}
+    spans: dict[str, Span] = {}
+    missing = False
+    for item in items:
+        text = ev.eval(item.value, scope)
+        if text is None:
+            if not unknowns:
+                missing = True
+                continue
+            counter[0] += 1
+            text = f"{UNKNOWN_PREFIX}{counter[0]}"
+        out[item.key] = text
+        if item.span is not None:
+            spans[item.key] = item.span
+    return None if missing else (out, spans)
+
+
+def rewritten_yaml(ev: Evaluator, p: v.RewrittenYaml, scope: Scope) -> str | None:
+    path = ev.eval(p.path, scope)
+    counter = [0]
+    params = _rewrites(ev, p.param_rewrites or (), scope, counter, True)
+    keys = _rewrites(ev, p.key_rewrites or (), scope, counter, False)
+    values = _rewrites(ev, p.value_rewrites or (), scope, counter, True)
+    root = ev.eval(p.root_key, scope) if p.root_key is not None else ""
+    if (path is None or params is None or keys is None or values is None or root is None
+            or p.param_rewrites is None or p.key_rewrites is None or p.value_rewrites is None
+            or p.convert_types is None):
+        return None
+    src = _read_source(ev, path)
+    if src is None:
+        return None
+    text, file, virtual = src
+    loaded = _load(text, file, _node_spans(file, virtual))
+    if loaded is None:
+        return None
+    data, spans = loaded
+    rewrite_spans = dict(params[1])
+    for key, span in values[1].items():
+        rewrite_spans["=" + key] = span
+    rw = _Rewriter(p.convert_types, spans, rewrite_spans)
+    try:
+        rw.substitute_params(data, params[0])
+        rw.add_params(data, params[0])
+        rw.substitute_keys(data, keys[0])
+        rw.substitute_values(data, values[0])
+    except Exception:  # noqa: BLE001 - RewrittenYaml raises here too: the launch fails
+        return None
+    fallback = p.span or Span.whole_file(file)
+    if root:
+        data = {root: data}
+        rspan = v.span_of(p.root_key) or fallback
+        spans[id(data)] = {root: (rspan, rspan)}
+    try:
+        dumped = yaml.dump(data)
+    except yaml.YAMLError:
+        return None
+    out = _register(ev, "RewrittenYaml", dumped, fallback, virtual.source if virtual else file)
+    _map_positions(out, dumped, data, spans)
+    return out.path
+
+
+def _register(ev: Evaluator, kind: str, text: str, fallback: Span, source: str | None) -> VirtualFile:
+    path = f"{VIRTUAL_DIR}/{kind}-{len(ev.virtual) + 1}.yaml"
+    vf = VirtualFile(path, text, {}, fallback, source)
+    ev.virtual[path] = vf
+    return vf
+
+
+def _map_positions(vf: VirtualFile, dumped: str, data: Any,
+                   spans: dict[int, dict[Any, tuple[Span, Span]]]) -> None:
+    """Map each node of the dumped text to where the same value came from."""
+    loader = _RecordingLoader(dumped)
+    try:
+        node = loader.get_single_node()
+        if node is not None:
+            loader.construct_document(node)
+    except (yaml.YAMLError, ValueError, TypeError, RecursionError):
+        return
+    finally:
+        loader.dispose()
+
+    def at(n: Any) -> tuple[int, int]:
+        return n.start_mark.line + 1, n.start_mark.column + 1
+
+    def walk(n: Any, obj: Any) -> None:
+        table = spans.get(id(obj), {})
+        if isinstance(n, yaml.MappingNode) and isinstance(obj, dict):
+            for kn, vn in n.value:
+                key = loader.made.get(id(kn), (None, None))[1]
+                try:
+                    hit = table.get(key)
+                    child = obj.get(key)
+                except TypeError:
+                    continue
+                if hit is not None:
+                    vf.origin[at(kn)] = hit[0]
+                    vf.origin[at(vn)] = hit[1]
+                walk(vn, child)
+        elif isinstance(n, yaml.SequenceNode) and isinstance(obj, list):
+            for i, item in enumerate(n.value):
+                hit = table.get(i)
+                if hit is not None:
+                    vf.origin[at(item)] = hit[1]
+                if i < len(obj):
+                    walk(item, obj[i])
+
+    if node is not None:
+        walk(node, data)
+
+
+def replace_string(ev: Evaluator, p: v.ReplaceString, scope: Scope) -> str | None:
+    path = ev.eval(p.path, scope)
+    reps = _rewrites(ev, p.replacements or (), scope, [0], False)
+    if p.condition is not None:
+        truth = ev.condition(p.condition[0], p.condition[1], scope)
+        if truth is None:
+            return None
+        if not truth:
+            return path
+    if path is None or reps is None or p.replacements is None:
+        return None
+    src = _read_source(ev, path)
+    if src is None:
+        return None
+    text, file, virtual = src
+    lines = []
+    for line in text.splitlines(keepends=True):
+        for key, value in reps[0].items():
+            if key in line:
+                line = line.replace(key, value)
+        lines.append(line)
+    out = _derive(ev, "ReplaceString", "".join(lines), text, file, virtual, p.span)
+    return out.path if out is not None else None
+
+
+def _derive(ev: Evaluator, kind: str, new: str, text: str, file: str, virtual: VirtualFile | None,
+            span: Span | None) -> VirtualFile | None:
+    """A temporary copy of a file with some lines changed: positions stay those of the source on
+    unchanged lines; a changed line points at the last value written on it."""
+    if new.count("\n") != text.count("\n"):
+        return None  # a replacement added lines: positions cannot be kept (rare); stay silent
+    fallback = span or Span.whole_file(file)
+    out = _register(ev, kind, new, fallback, virtual.source if virtual else file)
+    changed = {i + 1 for i, (a, b) in enumerate(zip(text.splitlines(), new.splitlines())) if a != b}
+    by_line: dict[int, list[tuple[int, Span]]] = {}
+    if virtual is not None:
+        for (ln, col), sp in virtual.origin.items():
+            by_line.setdefault(ln, []).append((col, sp))
+
+    def line_origin(line: int, col: int) -> Span | None:
+        if virtual is None:
+            return Span(file, line, col, line, col + 1) if line not in changed else Span(file, line, 1, line, 2)
+        if line not in changed:
+            return virtual.span_of(line, col)
+        hits = sorted(by_line.get(line, []))
+        return hits[-1][1] if hits else virtual.span_of(line, 1)
+
+    out.line_origin = line_origin
+    return out
+
+
+def with_substitutions(ev: Evaluator, vf: VirtualFile, scope: Scope) -> VirtualFile | None:
+    """``ParameterFile(..., allow_substs=True)``: launch_ros performs the ``$(...)`` substitutions
+    of the whole text (comments included) into another temporary file."""
+    if "$(" not in vf.text:
+        return vf
+    from physai_lint.frontends.substitutions import parse_substitutions
+
+    value, diags = parse_substitutions(vf.text, Span(vf.path, 1, 1, 1, 2))
+    if diags:
+        return None
+    new = ev.eval(value, scope)
+    if new is None:
+        return None
+    return _derive(ev, "ParameterFile", new, vf.text, vf.path, vf, vf.fallback)
+
+
+def has_node_params(ev: Evaluator, p: v.HasNodeParams, scope: Scope) -> str | None:
+    path = ev.eval(p.path, scope)
+    if path is None or p.node_name is None:
+        return None
+    src = _read_source(ev, path)
+    if src is None:
+        return None
+    loaded = _load(src[0], src[1], lambda n: _mark_span(src[1], n))
+    if loaded is None:
+        return None
+    data = loaded[0]
+    return "True" if isinstance(data, dict) and p.node_name in data else "False"
+
+
+def launch_config_as_bool(ev: Evaluator, p: v.LaunchConfigAsBool, scope: Scope) -> str | None:
+    value = ev.eval(p.name, scope)
+    if value is None:
+        return None
+    return "True" if value.strip().lower() in TRUE_WORDS else "False"
+
+
+def evaluate(ev: Evaluator, p: Any, scope: Scope) -> str | None:
+    if isinstance(p, v.RewrittenYaml):
+        return rewritten_yaml(ev, p, scope)
+    if isinstance(p, v.ReplaceString):
+        return replace_string(ev, p, scope)
+    if isinstance(p, v.HasNodeParams):
+        return has_node_params(ev, p, scope)
+    return launch_config_as_bool(ev, p, scope)
+
+
+# ---- the params model of a virtual file ---------------------------------------------------------
+
+
+def _param_model(vf: VirtualFile, distro: str) -> ParamFileModel | None:
+    from physai_lint.params.loader import load_param_file
+
+    model = load_param_file(vf.path, vf.text, distro)
+    memo: dict[int, Any] = {}
+
+    def span(s: Span) -> Span:
+        if s.file != vf.path:
+            return s
+        return vf.span_of(s.line, s.col)
+
+    model = _remap(model, span, memo)
+    model.path = vf.source or vf.path
+    ops = []
+    for op in model.ops:
+        if op[0] == "set" and _has_placeholder(op[2]):
+            fp = op[3]
+            fp = dataclasses.replace(fp, value=None, launch_value=None) if fp is not None else None
+            op = ("set", "unknown", None, fp)
+        ops.append(op)
+    model.ops = ops
+    model.blocks = [dataclasses.replace(b, params=tuple(
+        dataclasses.replace(prm, value=None, launch_value=None) if _has_placeholder(prm.value) else prm
+        for prm in b.params)) for b in model.blocks]
+    return model
+
+
+def _has_placeholder(value: Any) -> bool:
+    if isinstance(value, str):
+        return value.startswith(UNKNOWN_PREFIX)
+    if isinstance(value, list):
+        return any(_has_placeholder(x) for x in value)
+    return False
+
+
+def _remap(obj: Any, fn: Callable[[Span], Span], memo: dict[int, Any]) -> Any:
+    """``obj`` with every ``Span`` passed through ``fn`` (dataclasses, tuples and lists)."""
+    if isinstance(obj, Span):
+        return fn(obj)
+    if id(obj) in memo:
+        return memo[id(obj)]
+    out: Any = obj
+    if isinstance(obj, tuple):
+        out = tuple(_remap(x, fn, memo) for x in obj)
+    elif isinstance(obj, list):
+        out = [_remap(x, fn, memo) for x in obj]
+    elif dataclasses.is_dataclass(obj) and not isinstance(obj, type):
+        changes = {}
+        for f in dataclasses.fields(obj):
+            old = getattr(obj, f.name)
+            new = _remap(old, fn, memo)
+            if new is not old:
+                changes[f.name] = new
+        if changes:
+            if type(obj).__dataclass_params__.frozen:
+                out = dataclasses.replace(obj, **changes)
+            else:
+                for k, x in changes.items():
+                    setattr(obj, k, x)
+    memo[id(obj)] = out
+    return out

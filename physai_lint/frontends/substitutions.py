@@ -73,6 +73,8 @@ class _Ctx:
     diags: list[Diagnostic]
 
     def span(self, start: int, end: int) -> Span:
+        last = len(self.pos) - 1  # an error at the very end ("$(" closing a value) points past it
+        start, end = min(start, last), min(end, last)
         (l1, c1), (l2, c2) = self.pos[start], self.pos[max(end, start)]
         if end <= start:
             return Span(self.file, l1, c1, l1, c1 + 1)

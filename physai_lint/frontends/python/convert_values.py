@@ -136,8 +136,8 @@ def subst(o: LObj) -> V.Subst:
 def _rewrites(o: LObj, pos: int, name: str) -> tuple[V.Rewrite, ...] | None:
     """A ``dict[str, SomeSubstitutionsType]`` argument as literal keys and values (None: unknown)."""
     d = o.arg(pos, name)
-    if d is None:
-        return ()
+    if d is None or (isinstance(d, (str, list, tuple)) and not d):
+        return ()  # nav2 iterates it: an empty str/list is an empty dict (param_rewrites="")
     if not isinstance(d, dict) or not all(isinstance(k, str) for k in d):
         return None
     spans = item_spans(d) if isinstance(item_spans(d), dict) else {}

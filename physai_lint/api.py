@@ -58,6 +58,7 @@ def _jsonable(value: Any) -> Any:
 def graph_document(project: Project, launch: LaunchResult) -> dict[str, Any]:
     """The graph JSON document (contract: physai-lint/graph/1)."""
     from physai_lint.graph.system import build_graph
+    from physai_lint.params.effective import sources_complete
 
     cwd = project.cwd
     nodes = []
@@ -70,6 +71,9 @@ def graph_document(project: Project, launch: LaunchResult) -> dict[str, Any]:
             "active": "unknown" if n.active is None else n.active,
             "remappings": [[r.src, r.dst] for r in n.remaps],
             "parameters": params,
+            # False when a parameter source (a file or dict) cannot be known statically: the node may
+            # receive more parameters than listed, and listed values may be overridden.
+            "parameters_complete": sources_complete(n.param_sources, project.param_files),
             "parameter_files": [_rel(s.path, cwd) if s.status != "ok" else _rel(s.source or s.path, cwd)
                                 for s in n.param_sources if isinstance(s, ResolvedParamFile)],
             "container": n.container,

@@ -62,6 +62,19 @@ def _file_for(src: ResolvedParamFile, files: Mapping[str, ParamFileModel]) -> Pa
     return None
 
 
+def sources_complete(sources: Any, files: Mapping[str, ParamFileModel]) -> bool:
+    """Whether every parameter source of a node is statically known (files read, dicts evaluated).
+
+    A missing file does not count against it: launch drops it with a warning.
+    """
+    for src in sources:
+        if isinstance(src, UnknownParams):
+            return False
+        if isinstance(src, ResolvedParamFile) and src.status != "missing" and _file_for(src, files) is None:
+            return False
+    return True
+
+
 def _launch_slot(value: Any, distro: str) -> tuple[str, Any] | None:
     """How rcl reads a launch dict value after launch_ros dumps it to a temporary YAML file."""
     if isinstance(value, bool):

@@ -18,7 +18,7 @@ _ACTIONS_ROS = (
     "SetRemap SetParameter SetParametersFromFile SetUseSimTime RosTimer SetROSLogDir LifecycleTransition"
 )
 _SUBST_LAUNCH = (
-    "TextSubstitution LaunchConfiguration PathJoinSubstitution EnvironmentVariable ThisLaunchFileDir "
+    "TextSubstitution LaunchConfiguration PathJoinSubstitution PathSubstitution EnvironmentVariable ThisLaunchFileDir "
     "ThisLaunchFile Command PythonExpression AnonName NotSubstitution AndSubstitution OrSubstitution "
     "AnySubstitution AllSubstitution EqualsSubstitution NotEqualsSubstitution IfElseSubstitution "
     "FindExecutable LocalSubstitution FileContent LaunchLogDir BooleanSubstitution"

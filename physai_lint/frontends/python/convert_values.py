@@ -88,8 +88,8 @@ def subst(o: LObj) -> V.Subst:
         return V.Text(str(o.arg(0, "text", "")), s) if isinstance(o.arg(0, "text", ""), str) else V.Unknown("text", s)
     if n == "LaunchConfiguration":
         return V.LaunchConfig(_val(o, 0, "variable_name"), opt_value(o, 1, "default"), s)
-    if n == "PathJoinSubstitution":
-        parts = o.arg(0, "substitutions")
+    if n in ("PathJoinSubstitution", "PathSubstitution"):
+        parts = o.arg(0, "substitutions" if n == "PathJoinSubstitution" else "path")
         if isinstance(parts, (list, tuple)):
             return V.PathJoin(tuple(to_value(p, span_at(parts, i, s)) for i, p in enumerate(parts)), s)
         return V.PathJoin((to_value(parts, s),), s)

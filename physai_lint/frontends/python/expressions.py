@@ -12,7 +12,7 @@ from physai_lint.model.span import Span
 from . import calls, symbolic
 from .bounds import SizeGuard
 from .core import BINOPS, BUILTIN_NAMES, CMPOPS, MAX_LOOP, Abort, Scope, is_concrete, truth
-from .runtime import Opaque, Ref, SStr, SymBool
+from .runtime import LObj, Opaque, Ref, SStr, SymBool
 
 
 class ExpressionsMixin:
@@ -93,6 +93,10 @@ class ExpressionsMixin:
             if isinstance(spans[0], list) and isinstance(spans[1], list):
                 self.register(joined, spans[0] + spans[1])
             return joined
+        if isinstance(op, ast.Div) and isinstance(left, LObj):
+            joined = _path_div(left, right, span)
+            if joined is not None:
+                return joined
         sym = symbolic.binop(self, op, left, right, span)
         if sym is not None:
             return sym
@@ -310,3 +314,32 @@ class ExpressionsMixin:
             return Opaque("comprehension over values that cannot be evaluated statically", self.span(n, scope))
         return out
 
+
+
+def path_components(obj: LObj) -> list[Any] | None:
+    """The path components of a PathJoinSubstitution / PathSubstitution (launch >= 3.x, jazzy on).
+
+    ``PathSubstitution(path)`` normalises ``path`` to a list of substitutions and makes each one a
+    component; ``PathJoinSubstitution(components)`` takes the components as given.
+    """
+    from . import api
+
+    short = api.short(obj.qual)
+    if short == "PathJoinSubstitution":
+        parts = obj.arg(0, "substitutions")
+    elif short == "PathSubstitution":
+        parts = obj.arg(0, "path")
+    else:
+        return None
+    if isinstance(parts, (list, tuple)):
+        return list(parts)
+    return [parts]
+
+
+def _path_div(left: LObj, right: Any, span: Span) -> LObj | None:
+    """``PathJoinSubstitution.__truediv__``: a new PathJoinSubstitution with one more component."""
+    parts = path_components(left)
+    if parts is None:
+        return None
+    qual = left.qual.rsplit(".", 1)[0] + ".PathJoinSubstitution"
+    return LObj(qual, [parts + [right]], {}, left.node, span, [span], {})

@@ -457,6 +457,28 @@ def with_substitutions(ev: Evaluator, vf: VirtualFile, scope: Scope) -> VirtualF
     return _derive(ev, "ParameterFile", new, vf.text, vf.path, vf, vf.fallback)
 
 
+def substituted_workspace_file(ev: Evaluator, path: str, span: Span, scope: Scope
+                               ) -> VirtualFile | None | bool:
+    """A workspace parameter file loaded with ``allow_substs``: launch_ros performs its ``$(...)``.
+
+    False when there is nothing to do (unreadable here, or no ``$(`` in it); None when the
+    substitutions cannot be performed statically (then its values are unknown).
+    """
+    src = _read_source(ev, path)
+    if src is None or "$(" not in src[0]:
+        return False
+    text, file, virtual = src
+    from physai_lint.frontends.substitutions import parse_substitutions
+
+    value, diags = parse_substitutions(text, Span(file, 1, 1, 1, 2))
+    if diags:
+        return None
+    new = ev.eval(value, scope)
+    if new is None:
+        return None
+    return _derive(ev, "ParameterFile", new, text, file, virtual, span)
+
+
 def has_node_params(ev: Evaluator, p: v.HasNodeParams, scope: Scope) -> str | None:
     path = ev.eval(p.path, scope)
     if path is None or p.node_name is None:

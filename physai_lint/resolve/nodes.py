@@ -99,6 +99,18 @@ class NodeBuilder:
             return ResolvedParamFile(path, None, status, span, origin, allow_substs,  # type: ignore[arg-type]
                                      model=model, derived_from=virtual.source if virtual else None)
         source, status = self._locate(path)
+        if allow_substs and status == "ok" and path:
+            from physai_lint.resolve.nav2_common import VirtualFile, substituted_workspace_file
+
+            derived = substituted_workspace_file(self.inst.ev, path, span, scope)
+            if derived is not False:
+                distro = getattr(self.inst.packages, "distro", "humble")
+                model = derived.param_model(distro) if isinstance(derived, VirtualFile) else None
+                if model is None:  # its $(...) cannot be performed statically: its values are unknown
+                    return ResolvedParamFile(path, None, "unknown", span, origin, allow_substs,  # type: ignore[arg-type]
+                                             derived_from=source)
+                return ResolvedParamFile(path, source, "ok", span, origin, allow_substs,  # type: ignore[arg-type]
+                                         model=model, derived_from=source)
         return ResolvedParamFile(path, source, status, span, origin, allow_substs)  # type: ignore[arg-type]
 
     def _own_params(self, sources: tuple[ir.ParamSource, ...], scope: Scope, key: str

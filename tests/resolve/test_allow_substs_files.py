@@ -1,0 +1,57 @@
+"""Workspace parameter files loaded with allow_substs: launch_ros performs their $(...) first."""
+import json
+
+from physai_lint import api
+from physai_lint.engine import CheckOptions
+
+PKG = """<package format="3"><name>demo</name><version>0.0.0</version><description>d</description>
+<maintainer email="a@b.c">a</maintainer><license>MIT</license>
+<export><build_type>ament_cmake</build_type></export></package>
+"""
+
+PARAMS = """/**:
+  ros__parameters:
+    use_external: $(var use_ext)
+    rate: $(var rate)
+    name: fixed
+"""
+
+LAUNCH = """<launch>
+  <arg name="use_ext" default="false"/>
+  <arg name="rate"/>
+  <node pkg="demo" exec="a" name="subst">
+    <param from="$(find-pkg-share demo)/config/p.yaml" allow_substs="true"/>
+  </node>
+  <node pkg="demo" exec="a" name="plain">
+    <param from="$(find-pkg-share demo)/config/p.yaml"/>
+  </node>
+</launch>
+"""
+
+
+def _graph(tmp_path, *args):
+    pkg = tmp_path / "src" / "demo"
+    (pkg / "launch").mkdir(parents=True, exist_ok=True)
+    (pkg / "config").mkdir(exist_ok=True)
+    (pkg / "package.xml").write_text(PKG)
+    (pkg / "CMakeLists.txt").write_text(
+        "project(demo)\ninstall(DIRECTORY launch config DESTINATION share/${PROJECT_NAME})\n")
+    (pkg / "config" / "p.yaml").write_text(PARAMS)
+    entry = pkg / "launch" / "a.launch.xml"
+    entry.write_text(LAUNCH)
+    opts = CheckOptions(paths=[str(entry), *args], workspace=str(tmp_path))
+    return {n["name"]: n for n in json.loads(api.graph(opts, str(entry), "json"))["nodes"]}
+
+
+def test_substitutions_performed_and_typed(tmp_path):
+    nodes = _graph(tmp_path, "rate:=2.5")
+    assert nodes["subst"]["parameters"] == {"name": "fixed", "rate": 2.5, "use_external": False}
+    assert nodes["subst"]["parameters_complete"] is True
+    # without allow_substs the text stays as written (rcl reads strings)
+    assert nodes["plain"]["parameters"]["rate"] == "$(var rate)"
+
+
+def test_unknown_substitution_makes_the_file_unknown(tmp_path):
+    nodes = _graph(tmp_path)  # rate has no default and is not given
+    assert nodes["subst"]["parameters"] == {}
+    assert nodes["subst"]["parameters_complete"] is False

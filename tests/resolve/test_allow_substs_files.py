@@ -29,7 +29,7 @@ LAUNCH = """<launch>
 """
 
 
-def _graph(tmp_path, *args):
+def _graph(tmp_path, **args):
     pkg = tmp_path / "src" / "demo"
     (pkg / "launch").mkdir(parents=True, exist_ok=True)
     (pkg / "config").mkdir(exist_ok=True)
@@ -39,12 +39,12 @@ def _graph(tmp_path, *args):
     (pkg / "config" / "p.yaml").write_text(PARAMS)
     entry = pkg / "launch" / "a.launch.xml"
     entry.write_text(LAUNCH)
-    opts = CheckOptions(paths=[str(entry), *args], workspace=str(tmp_path))
+    opts = CheckOptions(paths=[str(entry)], launch_args=args, workspace=str(tmp_path))
     return {n["name"]: n for n in json.loads(api.graph(opts, str(entry), "json"))["nodes"]}
 
 
 def test_substitutions_performed_and_typed(tmp_path):
-    nodes = _graph(tmp_path, "rate:=2.5")
+    nodes = _graph(tmp_path, rate="2.5")
     assert nodes["subst"]["parameters"] == {"name": "fixed", "rate": 2.5, "use_external": False}
     assert nodes["subst"]["parameters_complete"] is True
     # without allow_substs the text stays as written (rcl reads strings)

@@ -2,6 +2,7 @@
 P103 parameter-file-no-match, P104 parameter-file-structure, P106 mixed-type-array."""
 from __future__ import annotations
 
+import os
 from collections.abc import Iterator
 
 from physai_lint.checks._util import all_nodes
@@ -18,9 +19,12 @@ def missing(ctx: CheckContext) -> Iterator[Diagnostic]:
         for src in node.param_sources:
             if isinstance(src, ResolvedParamFile) and src.status == "missing" and src.span not in seen:
                 seen.add(src.span)
+                what = ("is empty" if not (src.path or "").strip()
+                        else "is a directory" if src.source and os.path.isdir(src.source) else "does not exist")
+                shown = f'parameter file path "{src.path}"' if what != "does not exist" else f'parameter file "{src.path}"'
                 yield Diagnostic(
                     "P101", src.span,
-                    f'parameter file "{src.path}" does not exist; launch only warns "Parameter file '
+                    f'{shown} {what}; launch only warns "Parameter file '
                     f'path is not a file" and starts {node.fqn or node.executable} without it',
                     help="fix the path (package, folder or file name) or create the file",
                     key=src.path or "")

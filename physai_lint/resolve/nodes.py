@@ -2,6 +2,7 @@
 ``load_composable_nodes.get_composable_node_load_request``)."""
 from __future__ import annotations
 
+import os
 import re
 from typing import TYPE_CHECKING, Any
 
@@ -62,7 +63,11 @@ class NodeBuilder:
         pk = self.inst.packages
         if pk is None:
             return None, "unknown"
+        if not path.strip():
+            return None, "missing"  # launch_ros: '' is not a file (skipped with a warning, or an error)
         loc = pk.locate(path)
+        if loc.status == "ok" and loc.source and pk.exists(loc.source) and os.path.isdir(loc.source):
+            return loc.source, "missing"  # a directory is not a parameter file
         return loc.source, loc.status
 
     def _global_sources(self, scope: Scope, node_id: str) -> tuple[list[EffRemap], list[ParamSourceR]]:

@@ -55,3 +55,26 @@ def test_unknown_substitution_makes_the_file_unknown(tmp_path):
     nodes = _graph(tmp_path)  # rate has no default and is not given
     assert nodes["subst"]["parameters"] == {}
     assert nodes["subst"]["parameters_complete"] is False
+
+
+def test_empty_or_directory_param_path_is_not_read_as_a_file(tmp_path):
+    from physai_lint.engine import run_check
+
+    pkg = tmp_path / "src" / "demo"
+    (pkg / "launch").mkdir(parents=True)
+    (pkg / "config").mkdir()
+    (pkg / "package.xml").write_text(PKG)
+    (pkg / "CMakeLists.txt").write_text(
+        "project(demo)\ninstall(DIRECTORY launch config DESTINATION share/${PROJECT_NAME})\n")
+    (pkg / "launch" / "a.launch.xml").write_text("""<launch>
+  <arg name="cfg" default=""/>
+  <node pkg="demo" exec="a" name="n1"><param from="$(var cfg)"/></node>
+  <node pkg="demo" exec="a" name="n2"><param from="$(find-pkg-share demo)/config"/></node>
+</launch>
+""")
+    report = run_check(CheckOptions(paths=[str(tmp_path / "src")], workspace=str(tmp_path)))
+    codes = sorted(f.code for f in report.findings)
+    assert "X002" not in codes  # the workspace root / config directory is never read as a file
+    messages = sorted(f.message for f in report.findings if f.code == "P101")
+    assert len(messages) == 2
+    assert 'path "" is empty' in messages[0] and "is a directory" in messages[1]

@@ -11,6 +11,7 @@ from string literals or constants defined in the same file.
 """
 from __future__ import annotations
 
+import functools
 import re
 from dataclasses import dataclass
 
@@ -416,8 +417,16 @@ def _descriptor_read_only(arg: list[Tok], names: set[str]) -> bool:
     return False
 
 
+@functools.lru_cache(maxsize=256)
+def _tokens(text: str) -> list[Tok]:
+    """``tokenize`` memoised (callers only read the list): a package's executables share sources,
+    and the same file was tokenized once per executable (601 distinct files, 2,130 calls, half of
+    a run's time on the real-world corpus)."""
+    return tokenize(text)
+
+
 def _extract_one(path: str, text: str, iface: NodeInterface) -> None:
-    toks = tokenize(text)
+    toks = _tokens(text)
     consts = _constants(toks)
     read_only = _read_only_descriptors(toks)
     for i, t in enumerate(toks):

@@ -10,6 +10,7 @@ import json
 import re
 from pathlib import Path
 from typing import Any, Mapping
+from urllib.parse import quote
 
 from physai_lint import __version__
 from physai_lint.model.findings import SEVERITY_RANK, Finding
@@ -24,6 +25,11 @@ MAX_LOCATIONS = 10
 MAX_TEXT = 1024
 _PROBLEM_SEVERITY = {"error": "error", "warning": "warning", "note": "recommendation"}
 
+
+
+def _uri(path: str) -> str:
+    """A relative URI reference (SARIF 3.4.3): spaces and non-ASCII bytes percent-encoded."""
+    return quote(path, safe="/")
 
 def _clip(text: str, limit: int = MAX_TEXT) -> str:
     text = text.strip()
@@ -61,7 +67,7 @@ def rule_descriptor(code: str, name: str, severity: str, doc: Any) -> dict[str, 
 
 def _physical(span: Span, cwd: str) -> dict[str, Any]:
     return {
-        "artifactLocation": {"uri": rel(span.file, cwd), "uriBaseId": "%SRCROOT%"},
+        "artifactLocation": {"uri": _uri(rel(span.file, cwd)), "uriBaseId": "%SRCROOT%"},
         "region": {
             "startLine": span.line,
             "startColumn": span.col,

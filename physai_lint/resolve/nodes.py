@@ -203,7 +203,14 @@ class NodeBuilder:
         ns_raw, ns_given = self._eval(cn.namespace, scope)
         namespace, specified = self._namespace(ns_raw, ns_given, scope)
         if not specified:
-            namespace = container_ns  # forwarded global args: the container's -r __ns:=
+            # rclcpp_components loads a component with use_global_arguments(false): the container's
+            # own -r __ns:= reaches it only with extra_arguments forward_global_arguments: true
+            # (component_manager.cpp :: OnLoadNode / create_node_options); otherwise launch sends
+            # no namespace and the node gets its constructor's default, the root namespace.
+            forward = self._forwards_global_arguments(cn, scope)
+            namespace = container_ns if forward is not False else "/"
+            if forward is None:
+                namespace = container_ns if container_ns == "/" else None
         fqn = names.join_fqn(namespace, name) if (namespace and name) else None
         node_id = self._id()
         remaps, gparams = self._global_sources(scope, node_id)
@@ -219,6 +226,17 @@ class NodeBuilder:
         self.inst.result.nodes.append(inst_)
         if container_id is not None:
             self.inst.add_edge(container_id, node_id, "container", cn.span, None)
+
+    def _forwards_global_arguments(self, cn: ir.ComposableNode, scope: Scope) -> bool | None:
+        """extra_arguments forward_global_arguments (False when absent; None when unknown)."""
+        for key, value, _span in cn.extra_arguments:
+            if key != "forward_global_arguments":
+                continue
+            text = self.inst.ev.eval(value, scope)
+            if text is None:
+                return None
+            return text.strip().lower() in ("true", "1")
+        return False
 
     def load(self, a: ir.LoadComposableNodes, scope: Scope) -> None:
         container: str | None = None

@@ -135,6 +135,7 @@ class _Reader:
         offs: list[int] = []
         j = start
         src = self.text
+        end = min(end, len(src))  # libyaml's marks can run past the text it was given (fuzzer)
         for ch in value:
             if j < len(src) and src[j] == ch:
                 offs.append(j)

@@ -16,7 +16,16 @@ def test_unterminated_substitution_in_a_condition_is_l007_not_indexerror() -> No
     assert [(d.code, d.span.line) for d in res.diagnostics] == [("L007", 2)]
 
 
+def test_next_line_character_in_a_plain_scalar_is_positioned_not_indexerror() -> None:
+    # IndexError in yaml_launch positions(): U+0085 (NEL) is a line break to libyaml, so the
+    # scalar's end mark ran past the text (minimised from a fuzzer input).
+    res = parse_yaml_launch("/ws/a.launch.yaml", "launch:\n    e: L\x85     \n    n:\n    v: {e: 0}\n")
+    assert all(d.code != "X003" for d in res.diagnostics)
+
+
 REGRESSIONS = {
+    "yaml": ["launch:\n- append_env:\n    name: 'L\x85      '\n    children:\n    - unset_env: {name: '0'}\n".encode(),
+             "launch:\n    e: L\x85     \n    n:\n    v: {e: 0}\n".encode()],
     "xml": [b'<launch>\n  <set_parameter if="$(" unless="1.5" value="$(command \'ls\')"/>\n</launch>\n'],
 }
 

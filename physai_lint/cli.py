@@ -289,6 +289,7 @@ def _check(
         raise UsageError("no paths given (try: physai-lint .)")
     _existing(paths)
     opts, extras, catalog = _settings(paths, launch_args, common)
+    opts.progress = not quiet  # shown only when stderr is a terminal and the run takes over 1 s
     from physai_lint.engine import run_check
     from physai_lint.report import at_least, render
 
@@ -395,8 +396,8 @@ def _build_app() -> Any:
         statistics: bool = Opt(False, "--statistics", help="Print a count per rule instead of the findings."),
         baseline: Optional[str] = Opt(None, "--baseline", help="Hide the findings recorded in FILE.", metavar="FILE"),
         write_baseline: Optional[str] = Opt(None, "--write-baseline", help="Record the current findings in FILE and exit 0.", metavar="FILE"),
-        jobs: Optional[int] = Opt(None, "--jobs", "-j", metavar="N", help="Parallel workers."),
-        no_cache: bool = Opt(False, "--no-cache", help="Do not read or write the cache."),
+        jobs: Optional[int] = Opt(None, "--jobs", "-j", metavar="N", help="Parallel workers for parsing (default: number of CPUs)."),
+        no_cache: bool = Opt(False, "--no-cache", help="Do not read or write the parse cache (see PHYSAI_LINT_CACHE_DIR)."),
         no_respect_gitignore: bool = Opt(False, "--no-respect-gitignore", help="Also check files ignored by git."),
         strict: bool = Opt(False, "--strict", help="Report some statically unknown values as notes."),
         xunit_file: Optional[str] = Opt(None, "--xunit-file", help="Also write a JUnit XML report to FILE (colcon test).", metavar="FILE"),

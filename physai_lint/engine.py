@@ -33,6 +33,7 @@ class CheckOptions:
     strict: bool = False
     severity: dict[str, str] = field(default_factory=dict)
     exclude: list[str] = field(default_factory=list)
+    progress: bool = False  # a progress bar on stderr (the CLI sets it only for a TTY)
 
 
 @dataclass
@@ -64,7 +65,7 @@ def _abs(path: str, cwd: str) -> str:
     return os.path.normpath(os.path.join(cwd, path)).replace(os.sep, "/")
 
 
-def build_project(opts: CheckOptions, cwd: str | None = None) -> Project:
+def build_project(opts: CheckOptions, cwd: str | None = None, progress: Any = None) -> Project:
     """Discover, parse and resolve: the model that every subcommand reads."""
     from physai_lint import workspace as ws
     from physai_lint.resolve.instantiate import resolve_launch
@@ -81,7 +82,15 @@ def build_project(opts: CheckOptions, cwd: str | None = None) -> Project:
     if opts.workspace and not os.path.isdir(root):
         raise UsageError(f'workspace "{opts.workspace}" is not a directory')
     packages = ws.build_package_index(root, opts.distro, os.environ.get("AMENT_PREFIX_PATH"))
-    store = FileStore()
+    from physai_lint.cache import ParseCache
+    from physai_lint.parallel import default_jobs
+    from physai_lint.progress import Progress
+
+    progress = progress or Progress(False)
+    store = FileStore(cache=ParseCache.open(opts.cache))
+    # Parse every discovered file once, up front: from the disk cache, else in --jobs workers.
+    store.preload(found.launch_files, found.param_files, opts.distro, opts.jobs or default_jobs(),
+                  progress)
     diagnostics: list[Diagnostic] = []
     for path, message, line in getattr(packages, "problems", []):
         diagnostics.append(Diagnostic("X001", Span.point(path, max(line or 1, 1)), message,
@@ -93,9 +102,11 @@ def build_project(opts: CheckOptions, cwd: str | None = None) -> Project:
     explicit = set(found.explicit)
     launch_files = [p for p in found.launch_files]
     results = []
+    progress.stage("resolving", len(launch_files))
     for entry in launch_files:
         results.append(resolve_launch(entry, dict(opts.launch_args), loader, packages,
                                       explicit_entry=entry in explicit))
+        progress.advance()
     # A file that another analysed file includes is analysed through its includer (which gives it
     # its real arguments and namespace), not on its own; a file nobody includes is a root.
     included = {f for r in results for f in r.files[1:] if f != r.entry}
@@ -127,21 +138,16 @@ def _all_param_sources(launches: list[Any]) -> set[str]:
 
 
 def _load_params(store: FileStore, paths: list[str], distro: str, sink: list[Diagnostic]) -> dict[str, Any]:
-    from physai_lint.params.loader import load_param_file
-
     models: dict[str, Any] = {}
     for path in paths:
-        text = store.text(path)
-        if text is None:
-            continue
-        try:
-            model = load_param_file(path, text, distro)
-        except Exception as exc:  # a crash is a finding, not a traceback
-            sink.append(internal_error(path, "parameter file parser", exc))
+        model = store.param_file(path, distro)
+        if model is None:
             continue
         models[path] = model
         # P1xx structure findings are reported by their rules (checks/param_files.py).
         sink.extend(d for d in model.diagnostics if not d.code.startswith("P"))
+    sink.extend(store.param_diagnostics)  # parser crashes (X003)
+    store.param_diagnostics.clear()
     return models
 
 
@@ -160,7 +166,7 @@ def _interfaces(opts: CheckOptions, cwd: str, packages: Any, sink: list[Diagnost
     return store
 
 
-def run_checks(project: Project, opts: CheckOptions) -> list[Diagnostic]:
+def run_checks(project: Project, opts: CheckOptions, progress: Any = None) -> list[Diagnostic]:
     from physai_lint.checks.base import CheckContext, load_all
 
     ctx = CheckContext(
@@ -170,7 +176,12 @@ def run_checks(project: Project, opts: CheckOptions) -> list[Diagnostic]:
         options=opts.rule_options,
     )
     out: list[Diagnostic] = []
-    for code, impl in sorted(load_all().items()):
+    rules = sorted(load_all().items())
+    if progress is not None:
+        progress.stage("checking", len(rules))
+    for code, impl in rules:
+        if progress is not None:
+            progress.advance()
         try:
             out.extend(impl.func(ctx))
         except Exception as exc:  # a rule that raises becomes an X003 finding; the run goes on
@@ -197,13 +208,18 @@ def run_check(opts: CheckOptions, cwd: str | None = None) -> Report:
     from physai_lint import baseline as bl
     from physai_lint import suppress
     from physai_lint.catalog import load_catalog
+    from physai_lint.progress import Progress
     from physai_lint.selection import Selector
 
     started = time.perf_counter()
     catalog = load_catalog()
     selector = Selector(opts.select, opts.ignore, opts.extend_select, opts.per_file_ignores, catalog)
-    project = build_project(opts, cwd)
-    diags = project.diagnostics + run_checks(project, opts)
+    progress = Progress.start(opts.progress)
+    try:
+        project = build_project(opts, cwd, progress)
+        diags = project.diagnostics + run_checks(project, opts, progress)
+    finally:
+        progress.stop()
     seen: set[tuple[Any, ...]] = set()
     unique = []
     for d in diags:

@@ -1,13 +1,17 @@
 """Reading and parsing files, once each, with bounds: the engine's file loader.
 
 Bad input becomes a finding here (X002 unreadable-file: binary, undecodable, too large, unreadable)
-and never a traceback; each frontend is called at most once per file per run.
+and never a traceback; each frontend is called at most once per file per run. ``preload`` parses
+many files up front: from the disk cache (``cache.py``) when their content was seen before, else in
+a process pool when there are enough of them (``parallel.py``), always merged in path order so the
+output does not depend on the number of jobs.
 """
 from __future__ import annotations
 
 import os
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
+from typing import Any
 
 from physai_lint.model.findings import Diagnostic
 from physai_lint.model.launch import LaunchFile
@@ -36,6 +40,9 @@ class FileStore:
     launches: dict[str, LaunchFile | None] = field(default_factory=dict)
     diagnostics: list[Diagnostic] = field(default_factory=list)
     failed: set[str] = field(default_factory=set)
+    params: dict[str, Any] = field(default_factory=dict)  # path -> ParamFile model or None
+    param_diagnostics: list[Diagnostic] = field(default_factory=list)  # crashes of the param loader
+    cache: Any = None  # a cache.ParseCache, or None
 
     def text(self, path: str) -> str | None:
         if path in self.texts:
@@ -81,10 +88,136 @@ class FileStore:
         self.launches[path] = None  # guards against re-entry while parsing
         text = self.text(path)
         result = None
-        if text is not None:
-            result = parse_launch_text(path, text, reader or self.text, self.diagnostics)
+        if text is not None and launch_format(path) is not None:
+            job = Job("launch", path, text)
+            value = self._cached(job)
+            if value is None:
+                value, ok = run_job(job, reader or self.text)
+                self._store(job, value, ok)
+            result = self._accept(job, value)
         self.launches[path] = result
         return result
+
+    def param_file(self, path: str, distro: str) -> Any:
+        """The parameter file model (``params.loader.ParamFile``), or None when unreadable."""
+        if path in self.params:
+            return self.params[path]
+        text = self.text(path)
+        model = None
+        if text is not None:
+            job = Job("params", path, text, distro)
+            value = self._cached(job)
+            if value is None:
+                value, ok = run_job(job, None)
+                self._store(job, value, ok)
+            model = self._accept(job, value)
+        self.params[path] = model
+        return model
+
+    def preload(self, launches: Iterable[str], params: Iterable[str], distro: str, jobs: int,
+                progress: Any = None) -> None:
+        """Parse these files now: cached ones from disk, the others in a pool when worth it."""
+        from physai_lint import parallel
+
+        todo = [Job("launch", p, "") for p in sorted(set(launches)) if p not in self.launches
+                and launch_format(p) is not None]
+        todo += [Job("params", p, "", distro) for p in sorted(set(params)) if p not in self.params]
+        misses: list[Job] = []
+        for job in todo:
+            text = self.text(job.path)
+            if text is None:
+                continue
+            full = Job(job.kind, job.path, text, job.distro)
+            value = self._cached(full)
+            if value is None:
+                misses.append(full)
+            else:
+                self._preloaded(full, value)
+        if progress is not None:
+            progress.stage("parsing", len(misses))
+        for job, (value, ok, data) in zip(misses, parallel.map_jobs(misses, jobs, progress)):
+            self._store(job, value, ok, data)
+            self._preloaded(job, value)
+
+    def _preloaded(self, job: Job, value: Any) -> None:
+        result = self._accept(job, value)
+        if job.kind == "launch":
+            self.launches[job.path] = result
+        else:
+            self.params[job.path] = result
+
+    def _cached(self, job: Job) -> Any:
+        if self.cache is None:
+            return None
+        from physai_lint.cache import loads
+
+        data = self.cache.get_bytes(self.cache.key(job.kind, job.path, job.text, job.distro))
+        value = loads(data) if data is not None else None
+        return value if _well_formed(value) else None
+
+    def _store(self, job: Job, value: Any, cacheable: bool, data: bytes | None = None) -> None:
+        if self.cache is None or not cacheable or not self.cache.enabled:
+            return
+        from physai_lint.cache import dumps
+
+        data = data if data is not None else dumps(value)
+        if data is not None:
+            self.cache.put_bytes(self.cache.key(job.kind, job.path, job.text, job.distro), data)
+
+    def _accept(self, job: Job, value: Any) -> Any:
+        """Record a job's diagnostics; return its launch IR or parameter model."""
+        result, diags = value
+        if job.kind == "launch":
+            self.diagnostics.extend(diags)
+        else:
+            self.param_diagnostics.extend(diags)
+        return result
+
+
+@dataclass(frozen=True)
+class Job:
+    """One file to parse: ``kind`` is "launch" or "params"; ``distro`` matters for params only."""
+
+    kind: str
+    path: str
+    text: str
+    distro: str = ""
+
+
+def run_job(job: Job, reader: Callable[[str], str | None] | None) -> tuple[Any, bool]:
+    """((result, diagnostics), cacheable): a parse that is a pure function of the job.
+
+    Not cacheable: results of a crash (X003: worth retrying with fixed code) and Python launch
+    files that read other files (helper modules, YAML loaded at launch time) while evaluated.
+    """
+    diags: list[Diagnostic] = []
+    if job.kind == "params":
+        from physai_lint.params.loader import load_param_file
+
+        try:
+            return (load_param_file(job.path, job.text, job.distro), diags), True
+        except Exception as exc:  # noqa: BLE001 - a crash is a finding, not a traceback
+            diags.append(internal_error(job.path, "parameter file parser", exc))
+            return (None, diags), False
+    reads: list[str] = []
+
+    def recording(path: str) -> str | None:
+        reads.append(path)
+        return read(path)
+
+    read: Callable[[str], str | None]
+    if reader is None:
+        from physai_lint.workspace.index import read_text_file
+
+        read = read_text_file
+    else:
+        read = reader
+    result = parse_launch_text(job.path, job.text, recording, diags)
+    return (result, diags), not reads and not any(d.code == "X003" for d in diags)
+
+
+def _well_formed(value: Any) -> bool:
+    return isinstance(value, tuple) and len(value) == 2 and isinstance(value[1], list)
 
 
 def parse_launch_text(path: str, text: str, reader: Callable[[str], str | None],

@@ -173,8 +173,13 @@ def test_unknown_values_stay_unknown():
     """)
     n, extra, loop, opaque = acts
     assert isinstance(n.name[0], V.Unknown) and isinstance(n.parameters[0], L.ParamsUnknown)
-    assert isinstance(extra, L.OpaqueAction) and "condition" in extra.reason
-    assert isinstance(loop, L.OpaqueAction)
+    # a Python `if` / `for` on a run-time value keeps what it creates, under an unknown condition
+    for group, pkg in ((extra, "x"), (loop, "y")):
+        assert isinstance(group, L.Group) and not group.scoped
+        assert group.condition.kind == "if" and isinstance(group.condition.value[0], V.Unknown)
+        assert "cannot be evaluated statically" in group.condition.value[0].reason
+        (inner,) = group.actions
+        assert isinstance(inner, L.NodeAction) and inner.package[0].text == pkg
     assert isinstance(opaque, L.OpaqueAction) and "some_pkg.helper" in opaque.reason
     assert len({a.id for a in acts}) == 4
 

@@ -11,6 +11,7 @@ from collections.abc import Callable
 from typing import Any
 
 from physai_lint.model.launch import Condition
+from physai_lint.model.values import Unknown as UnknownValue
 from physai_lint.model.span import Span
 
 from . import bounds, calls, symbolic
@@ -254,8 +255,11 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
             tags = (CondTag(Condition(kinds[0], test.value, span, "if")),
                     CondTag(Condition(kinds[1], test.value, span, "else")))
         else:
+            # Both branches are kept, as launch-time conditions are: what they create gets a condition
+            # whose value is unknown (active: unknown), "if" for the body and "unless" for the else.
             reason = test.reason if isinstance(test, Opaque) else "condition cannot be evaluated statically"
-            tags = (CondTag(None, f"created under a condition that cannot be evaluated statically ({reason})"),) * 2
+            unknown = (UnknownValue(f"a Python condition that cannot be evaluated statically ({reason})", span),)
+            tags = (CondTag(Condition("if", unknown, span, "if")), CondTag(Condition("unless", unknown, span, "else")))
         snapshot = dict(scope.vars)
         envs: list[dict[str, Any]] = []
         rets: list[Any] = []

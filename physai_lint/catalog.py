@@ -81,7 +81,8 @@ def parse_rule_doc(path: Path) -> RuleDoc:
     match = _FRONT_MATTER.match(text)
     if not match:
         raise ValueError(f"{path}: missing YAML front matter")
-    meta = yaml.safe_load(match.group(1)) or {}
+    # libyaml when present: the pure-Python loader made reading the catalog half of a one-file run.
+    meta = yaml.load(match.group(1), Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader)) or {}
     if not isinstance(meta, dict):
         raise ValueError(f"{path}: front matter is not a mapping")
     for key in ("code", "name", "severity", "summary"):

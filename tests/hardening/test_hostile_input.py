@@ -201,7 +201,7 @@ def test_paths_with_spaces_and_non_ascii(tmp_path: Path, fmt: str) -> None:
 def test_50_megabyte_files(tmp_path: Path, fmt: str) -> None:
     """A 50 MB launch or parameter file: bounded time and memory, and a clear outcome.
 
-    A 50 MB launch.py needed more than 6 GB (its AST): Python launch files over 1 MB are X002."""
+    A 50 MB launch.py needed more than 6 GB (its AST): Python launch files over 2 MB are X002."""
     if fmt == "python":
         line = "    Node(package='demo', executable='e', name='n{i}'),\n"
         body = HEAD + "def generate_launch_description():\n  return LaunchDescription([\n" + "".join(

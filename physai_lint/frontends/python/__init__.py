@@ -33,7 +33,7 @@ from .runtime import LObj, Opaque, UserFunc
 __all__ = ["parse_python_launch"]
 
 
-MAX_PYTHON_CHARS = 1_000_000  # 40 times the largest launch.py in the corpus of public ROS 2 repos
+MAX_PYTHON_CHARS = 2_000_000  # 80 times the largest launch.py in a corpus of public ROS 2 repos
 
 def _syntax_error(path: str, text: str, err: BaseException) -> FrontendResult:
     if isinstance(err, SyntaxError):

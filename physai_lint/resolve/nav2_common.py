@@ -310,6 +310,18 @@ def rewritten_yaml(ev: Evaluator, p: v.RewrittenYaml, scope: Scope) -> str | Non
             or p.param_rewrites is None or p.key_rewrites is None or p.value_rewrites is None
             or p.convert_types is None):
         return None
+    # The same RewrittenYaml with the same inputs writes the same file: nav2 hands one to every
+    # server (47 evaluations per bringup entry, ~0.1 s each, before this memo).
+    memo: dict[Any, str | None] = ev.__dict__.setdefault("_rewritten_yaml_memo", {})
+    key = (p.span, path, tuple(params[0].items()), tuple(keys[0].items()), tuple(values[0].items()),
+           root, p.convert_types)
+    if key not in memo:
+        memo[key] = _rewritten_yaml(ev, p, path, params, keys, values, root)
+    return memo[key]
+
+
+def _rewritten_yaml(ev: Evaluator, p: v.RewrittenYaml, path: str, params: Any, keys: Any, values: Any,
+                    root: str) -> str | None:
     src = _read_source(ev, path)
     if src is None:
         return None
@@ -448,15 +460,35 @@ def with_substitutions(ev: Evaluator, vf: VirtualFile, scope: Scope) -> VirtualF
     of the whole text (comments included) into another temporary file."""
     if "$(" not in vf.text:
         return vf
-    from physai_lint.frontends.substitutions import parse_substitutions
-
-    value, diags = parse_substitutions(vf.text, Span(vf.path, 1, 1, 1, 2))
-    if diags:
+    value = _substitutions_of(ev, vf.text, vf.path)
+    if value is None:
         return None
     new = ev.eval(value, scope)
     if new is None:
         return None
-    return _derive(ev, "ParameterFile", new, vf.text, vf.path, vf, vf.fallback)
+    return _derived_once(ev, new, vf.text, vf.path, vf, vf.fallback)
+
+
+def _substitutions_of(ev: Evaluator, text: str, file: str) -> Any:
+    """The ``$(...)`` parse of a whole file's text, once per file (None when malformed)."""
+    memo: dict[tuple[str, str], Any] = ev.__dict__.setdefault("_substs_memo", {})
+    key = (file, text)
+    if key not in memo:
+        from physai_lint.frontends.substitutions import parse_substitutions
+
+        value, diags = parse_substitutions(text, Span(file, 1, 1, 1, 2))
+        memo[key] = None if diags else value
+    return memo[key]
+
+
+def _derived_once(ev: Evaluator, new: str, text: str, file: str, virtual: VirtualFile | None,
+                  span: Span | None) -> VirtualFile | None:
+    """The same file with the same substitutions performed is one temporary file (and one model)."""
+    memo: dict[tuple[str, str, Any], VirtualFile | None] = ev.__dict__.setdefault("_derived_memo", {})
+    key = (file, new, span)
+    if key not in memo:
+        memo[key] = _derive(ev, "ParameterFile", new, text, file, virtual, span)
+    return memo[key]
 
 
 def substituted_workspace_file(ev: Evaluator, path: str, span: Span, scope: Scope
@@ -470,15 +502,13 @@ def substituted_workspace_file(ev: Evaluator, path: str, span: Span, scope: Scop
     if src is None or "$(" not in src[0]:
         return False
     text, file, virtual = src
-    from physai_lint.frontends.substitutions import parse_substitutions
-
-    value, diags = parse_substitutions(text, Span(file, 1, 1, 1, 2))
-    if diags:
+    value = _substitutions_of(ev, text, file)
+    if value is None:
         return None
     new = ev.eval(value, scope)
     if new is None:
         return None
-    return _derive(ev, "ParameterFile", new, text, file, virtual, span)
+    return _derived_once(ev, new, text, file, virtual, span)
 
 
 def has_node_params(ev: Evaluator, p: v.HasNodeParams, scope: Scope) -> str | None:

@@ -229,7 +229,7 @@ def run_check(opts: CheckOptions, cwd: str | None = None) -> Report:
             unique.append(d)
     findings = [f for f in to_findings(unique, catalog, opts.severity)
                 if f.span.file in project.targets or f.code.startswith("X")
-                and f.span.file in project.store.texts]
+                and (f.span.file in project.store.texts or _manifest_of_targets(f.span.file, project.targets))]
     findings = [f for f in findings if selector.enabled_for(f.code, _rel(f.span.file, project.cwd))]
     findings, extra = _suppress(findings, project, catalog, selector, suppress)
     findings += [f for f in to_findings(extra, catalog, opts.severity)
@@ -263,6 +263,14 @@ def _rel(path: str, cwd: str) -> str:
         return os.path.relpath(path, cwd).replace(os.sep, "/")
     except ValueError:
         return path
+
+
+def _manifest_of_targets(path: str, targets: set[str]) -> bool:
+    """A package.xml (read by the package index, not the file store) of a package being checked."""
+    if os.path.basename(path) != "package.xml":
+        return False
+    pkg_dir = os.path.dirname(path) + "/"
+    return any(t.startswith(pkg_dir) for t in targets)
 
 
 def exit_code(report: Report, fail_on: str) -> int:

@@ -190,9 +190,7 @@ def test_paths_with_spaces_and_non_ascii(tmp_path: Path, fmt: str) -> None:
 
 
 @pytest.mark.parametrize("fmt", [
-    pytest.param("xml", marks=pytest.mark.xfail(run=False, reason=(
-        "a 50 MB XML launch file needs more than 2 GB and 200 s, then aborts: XML/YAML launch files "
-        "need a size limit like Python's (files.parse_launch_text, owned by the engine work)"))),
+    "xml",
     "python",
     pytest.param("params", marks=pytest.mark.xfail(strict=True, reason=(
         "no finding at all for a 50 MB parameter file: the loader's X001 'too many YAML nodes' "
@@ -220,14 +218,12 @@ def test_50_megabyte_files(tmp_path: Path, fmt: str) -> None:
     proc, findings = _check_json(ws, tmp_path)
     assert proc.returncode in (0, 1)
     assert not [f for f in findings if f["code"] == "X003"]
-    if fmt == "python":
-        assert [f["code"] for f in findings if str(f["file"]).endswith("big.launch.py")] == ["X002"]
+    if fmt in ("python", "xml"):
+        assert [f["code"] for f in findings if str(f["file"]).endswith(f"big.launch.{'py' if fmt == 'python' else 'xml'}")] == ["X002"]
     if fmt == "params":
         assert any(str(f["file"]).endswith("big.yaml") for f in findings), findings[:5]
 
 
-@pytest.mark.xfail(strict=True, reason="engine.run_check drops the X001 it builds for a broken package.xml: "
-                   "package.xml is neither a target nor in the file store (physai_lint/engine.py filter)")
 @pytest.mark.parametrize("manifest", [
     "<package format='3'><name>demo</name",
     LOL.replace("launch", "package").replace('<arg name="a" default="&l9;"/>', "<name>demo&l9;</name>"),

@@ -341,7 +341,7 @@ def inputs(fmt: str) -> st.SearchStrategy[bytes]:
 PACKAGE_XML = """<?xml version="1.0"?>
 <package format="3">
   <name>demo</name><version>0.1.0</version><description>d</description>
-  <maintainer email="a@b.c">m</maintainer><license>Apache-2.0</license>
+  <maintainer email="m@example.com">m</maintainer><license>Apache-2.0</license>
   <buildtool_depend>ament_cmake</buildtool_depend>
   <export><build_type>ament_cmake</build_type></export>
 </package>

@@ -128,7 +128,7 @@ setup(
   <name>evil_py</name>
   <version>0.1.0</version>
   <description>trap</description>
-  <maintainer email="a@b.c">x</maintainer>
+  <maintainer email="m@example.com">x</maintainer>
   <license>Apache-2.0</license>
   <exec_depend>evil_cpp</exec_depend>
   <export><build_type>ament_python</build_type></export>

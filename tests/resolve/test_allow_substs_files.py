@@ -5,7 +5,7 @@ from physai_lint import api
 from physai_lint.engine import CheckOptions
 
 PKG = """<package format="3"><name>demo</name><version>0.0.0</version><description>d</description>
-<maintainer email="a@b.c">a</maintainer><license>MIT</license>
+<maintainer email="m@example.com">a</maintainer><license>MIT</license>
 <export><build_type>ament_cmake</build_type></export></package>
 """
 

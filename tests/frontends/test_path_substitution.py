@@ -1,13 +1,4 @@
 """PathSubstitution and PathJoinSubstitution's ``/`` operator (launch on jazzy and later)."""
-import json
-
-from physai_lint import api
-from physai_lint.engine import CheckOptions
-
-PKG = """<package format="3"><name>demo</name><version>0.0.0</version><description>d</description>
-<maintainer email="m@example.com">a</maintainer><license>MIT</license>
-<export><build_type>ament_cmake</build_type></export></package>
-"""
 
 LAUNCH = """
 from launch import LaunchDescription
@@ -29,18 +20,9 @@ def generate_launch_description():
 """
 
 
-def test_path_substitution_and_truediv(tmp_path):
-    pkg = tmp_path / "src" / "demo"
-    (pkg / "launch").mkdir(parents=True)
-    (pkg / "config").mkdir()
-    (pkg / "package.xml").write_text(PKG)
-    (pkg / "CMakeLists.txt").write_text(
-        "project(demo)\ninstall(DIRECTORY launch config DESTINATION share/${PROJECT_NAME})\n")
-    (pkg / "config" / "p.yaml").write_text("/**:\n  ros__parameters:\n    rate: 5.0\n")
-    entry = pkg / "launch" / "a.launch.py"
-    entry.write_text(LAUNCH)
-    opts = CheckOptions(paths=[str(entry)], workspace=str(tmp_path), distro="rolling")
-    nodes = {n["name"]: n for n in json.loads(api.graph(opts, str(entry), "json"))["nodes"]}
+def test_path_substitution_and_truediv(demo_graph):
+    files = {"config/p.yaml": "/**:\n  ros__parameters:\n    rate: 5.0\n", "launch/a.launch.py": LAUNCH}
+    nodes = demo_graph(files, "launch/a.launch.py", distro="rolling")
     for name in ("slash", "join_then_slash", "list_path"):
         assert nodes[name]["parameters"] == {"rate": 5.0}, name
         assert nodes[name]["parameters_complete"] is True, name

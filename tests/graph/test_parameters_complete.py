@@ -1,13 +1,4 @@
 """graph JSON says when a node's parameters are not fully known, instead of implying it gets none."""
-import json
-
-from physai_lint import api
-from physai_lint.engine import CheckOptions
-
-PKG = """<package format="3"><name>demo</name><version>0.0.0</version><description>d</description>
-<maintainer email="m@example.com">a</maintainer><license>MIT</license>
-<export><build_type>ament_cmake</build_type></export></package>
-"""
 
 LAUNCH = """
 from launch import LaunchDescription
@@ -22,15 +13,8 @@ def generate_launch_description():
 """
 
 
-def test_unknown_parameter_source_marks_parameters_incomplete(tmp_path):
-    pkg = tmp_path / "src" / "demo"
-    (pkg / "launch").mkdir(parents=True)
-    (pkg / "package.xml").write_text(PKG)
-    (pkg / "CMakeLists.txt").write_text("project(demo)\ninstall(DIRECTORY launch DESTINATION share/${PROJECT_NAME})\n")
-    entry = pkg / "launch" / "a.launch.py"
-    entry.write_text(LAUNCH)
-    doc = json.loads(api.graph(CheckOptions(paths=[str(entry)], workspace=str(tmp_path)), str(entry), "json"))
-    by_name = {n["name"]: n for n in doc["nodes"]}
+def test_unknown_parameter_source_marks_parameters_incomplete(demo_graph):
+    by_name = demo_graph({"launch/a.launch.py": LAUNCH}, "launch/a.launch.py")
     assert by_name["known"]["parameters"] == {"rate": 5.0}
     assert by_name["known"]["parameters_complete"] is True
     assert by_name["opaque"]["parameters_complete"] is False

@@ -1,15 +1,6 @@
 """A component's namespace when the launch gives none: rclcpp_components loads it with
 use_global_arguments(false), so the container's namespace does not reach it unless
 extra_arguments asks for forward_global_arguments."""
-import json
-
-from physai_lint import api
-from physai_lint.engine import CheckOptions
-
-PKG = """<package format="3"><name>demo</name><version>0.0.0</version><description>d</description>
-<maintainer email="m@example.com">a</maintainer><license>MIT</license>
-<export><build_type>ament_cmake</build_type></export></package>
-"""
 
 LAUNCH = """
 from launch import LaunchDescription
@@ -35,13 +26,7 @@ def generate_launch_description():
 """
 
 
-def test_component_namespaces(tmp_path):
-    pkg = tmp_path / "src" / "demo"
-    (pkg / "launch").mkdir(parents=True)
-    (pkg / "package.xml").write_text(PKG)
-    (pkg / "CMakeLists.txt").write_text("project(demo)\ninstall(DIRECTORY launch DESTINATION share/${PROJECT_NAME})\n")
-    entry = pkg / "launch" / "a.launch.py"
-    entry.write_text(LAUNCH)
-    doc = json.loads(api.graph(CheckOptions(paths=[str(entry)], workspace=str(tmp_path)), str(entry), "json"))
-    fqns = {n["name"]: n["fqn"] for n in doc["nodes"] if n["kind"] == "composable_node"}
+def test_component_namespaces(demo_graph):
+    nodes = demo_graph({"launch/a.launch.py": LAUNCH}, "launch/a.launch.py").values()
+    fqns = {n["name"]: n["fqn"] for n in nodes if n["kind"] == "composable_node"}
     assert fqns == {"plain": "/plain", "forwarded": "/robot/forwarded", "own": "/arm/own", "pushed": "/fleet/pushed"}

@@ -1,0 +1,47 @@
+"""Fixtures shared by test folders."""
+from __future__ import annotations
+
+import json
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+DEMO_PACKAGE_XML = """<package format="3"><name>demo</name><version>0.0.0</version><description>d</description>
+<maintainer email="m@example.com">a</maintainer><license>MIT</license>
+<export><build_type>ament_cmake</build_type></export></package>
+"""
+DEMO_CMAKE = "project(demo)\ninstall(DIRECTORY launch config DESTINATION share/${PROJECT_NAME})\n"
+
+
+@pytest.fixture
+def demo_package(tmp_path: Path) -> Callable[[dict[str, str]], Path]:
+    """Write the ament_cmake package ``src/demo`` (installing launch/ and config/) with ``files``
+    (paths relative to the package); returns the package folder. The workspace is ``tmp_path``."""
+
+    def write(files: dict[str, str]) -> Path:
+        pkg = tmp_path / "src" / "demo"
+        for rel, text in {"package.xml": DEMO_PACKAGE_XML, "CMakeLists.txt": DEMO_CMAKE, **files}.items():
+            (pkg / rel).parent.mkdir(parents=True, exist_ok=True)
+            (pkg / rel).write_text(text)
+        return pkg
+
+    return write
+
+
+@pytest.fixture
+def demo_graph(tmp_path: Path, demo_package: Callable[[dict[str, str]], Path]
+               ) -> Callable[..., dict[str, dict[str, Any]]]:
+    """``demo_graph(files, entry, distro=..., **launch_args)``: the graph JSON nodes of
+    ``src/demo/<entry>`` by name, in a workspace holding only the demo package with ``files``."""
+    from physai_lint import api
+    from physai_lint.engine import CheckOptions
+
+    def graph(files: dict[str, str], entry: str, distro: str = "humble", **launch_args: str
+              ) -> dict[str, dict[str, Any]]:
+        path = str(demo_package(files) / entry)
+        opts = CheckOptions(paths=[path], launch_args=launch_args, workspace=str(tmp_path), distro=distro)
+        return {n["name"]: n for n in json.loads(api.graph(opts, path, "json"))["nodes"]}
+
+    return graph

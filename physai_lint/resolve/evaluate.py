@@ -77,6 +77,8 @@ class Evaluator:
         self.on_dirname: Callable[[Span | None, Scope], None] | None = None
         # temporary files that substitutions (nav2_common RewrittenYaml ...) write: path -> file
         self.virtual: dict[str, Any] = {}
+        # what those substitutions computed, by their inputs (nav2 hands one file to every server)
+        self.file_memo: dict[tuple[Any, ...], Any] = {}
 
     def eval(self, value: v.Value | None, scope: Scope) -> str | None:
         if value is None:

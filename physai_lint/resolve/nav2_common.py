@@ -312,8 +312,8 @@ def rewritten_yaml(ev: Evaluator, p: v.RewrittenYaml, scope: Scope) -> str | Non
         return None
     # The same RewrittenYaml with the same inputs writes the same file: nav2 hands one to every
     # server (47 evaluations per bringup entry, ~0.1 s each, before this memo).
-    memo: dict[Any, str | None] = ev.__dict__.setdefault("_rewritten_yaml_memo", {})
-    key = (p.span, path, tuple(params[0].items()), tuple(keys[0].items()), tuple(values[0].items()),
+    memo = ev.file_memo
+    key = ("RewrittenYaml", p.span, path, tuple(params[0].items()), tuple(keys[0].items()), tuple(values[0].items()),
            root, p.convert_types)
     if key not in memo:
         memo[key] = _rewritten_yaml(ev, p, path, params, keys, values, root)
@@ -471,8 +471,8 @@ def with_substitutions(ev: Evaluator, vf: VirtualFile, scope: Scope) -> VirtualF
 
 def _substitutions_of(ev: Evaluator, text: str, file: str) -> Any:
     """The ``$(...)`` parse of a whole file's text, once per file (None when malformed)."""
-    memo: dict[tuple[str, str], Any] = ev.__dict__.setdefault("_substs_memo", {})
-    key = (file, text)
+    memo = ev.file_memo
+    key = ("substitutions", file, text)
     if key not in memo:
         from physai_lint.frontends.substitutions import parse_substitutions
 
@@ -484,8 +484,8 @@ def _substitutions_of(ev: Evaluator, text: str, file: str) -> Any:
 def _derived_once(ev: Evaluator, new: str, text: str, file: str, virtual: VirtualFile | None,
                   span: Span | None) -> VirtualFile | None:
     """The same file with the same substitutions performed is one temporary file (and one model)."""
-    memo: dict[tuple[str, str, Any], VirtualFile | None] = ev.__dict__.setdefault("_derived_memo", {})
-    key = (file, new, span)
+    memo = ev.file_memo
+    key = ("derived", file, new, span)
     if key not in memo:
         memo[key] = _derive(ev, "ParameterFile", new, text, file, virtual, span)
     return memo[key]

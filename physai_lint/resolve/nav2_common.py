@@ -455,20 +455,6 @@ def _derive(ev: Evaluator, kind: str, new: str, text: str, file: str, virtual: V
     return out
 
 
-def with_substitutions(ev: Evaluator, vf: VirtualFile, scope: Scope) -> VirtualFile | None:
-    """``ParameterFile(..., allow_substs=True)``: launch_ros performs the ``$(...)`` substitutions
-    of the whole text (comments included) into another temporary file."""
-    if "$(" not in vf.text:
-        return vf
-    value = _substitutions_of(ev, vf.text, vf.path)
-    if value is None:
-        return None
-    new = ev.eval(value, scope)
-    if new is None:
-        return None
-    return _derived_once(ev, new, vf.text, vf.path, vf, vf.fallback)
-
-
 def _substitutions_of(ev: Evaluator, text: str, file: str) -> Any:
     """The ``$(...)`` parse of a whole file's text, once per file (None when malformed)."""
     memo = ev.file_memo
@@ -491,12 +477,13 @@ def _derived_once(ev: Evaluator, new: str, text: str, file: str, virtual: Virtua
     return memo[key]
 
 
-def substituted_workspace_file(ev: Evaluator, path: str, span: Span, scope: Scope
-                               ) -> VirtualFile | None | bool:
-    """A workspace parameter file loaded with ``allow_substs``: launch_ros performs its ``$(...)``.
+def with_substitutions(ev: Evaluator, path: str, span: Span, scope: Scope) -> VirtualFile | None | bool:
+    """``ParameterFile(..., allow_substs=True)`` / ``<param from=... allow_substs="true"/>``: launch_ros
+    performs the ``$(...)`` of the whole text (comments included) into another temporary file.
 
-    False when there is nothing to do (unreadable here, or no ``$(`` in it); None when the
-    substitutions cannot be performed statically (then its values are unknown).
+    Works on a workspace file or on a temporary file another substitution wrote. False when there
+    is nothing to do (unreadable here, or no ``$(`` in it); None when the substitutions cannot be
+    performed statically (then its values are unknown).
     """
     src = _read_source(ev, path)
     if src is None or "$(" not in src[0]:
@@ -508,7 +495,7 @@ def substituted_workspace_file(ev: Evaluator, path: str, span: Span, scope: Scop
     new = ev.eval(value, scope)
     if new is None:
         return None
-    return _derived_once(ev, new, text, file, virtual, span)
+    return _derived_once(ev, new, text, file, virtual, virtual.fallback if virtual else span)
 
 
 def has_node_params(ev: Evaluator, p: v.HasNodeParams, scope: Scope) -> str | None:

@@ -92,24 +92,22 @@ class NodeBuilder:
     def _file(self, path: str | None, span: Span, origin: str, allow_substs: bool, scope: Scope
               ) -> ParamSourceR:
         """A params file source; a temporary file written by a substitution carries its model."""
+        from physai_lint.resolve.nav2_common import VirtualFile, with_substitutions
+
+        distro = getattr(self.inst.packages, "distro", "humble")
         virtual = self.inst.ev.virtual.get(path) if path is not None else None
         if virtual is not None:
-            from physai_lint.resolve.nav2_common import with_substitutions
-
-            distro = getattr(self.inst.packages, "distro", "humble")
             if allow_substs:
-                virtual = with_substitutions(self.inst.ev, virtual, scope)
-            model = virtual.param_model(distro) if virtual is not None else None
+                derived = with_substitutions(self.inst.ev, path, span, scope)  # type: ignore[arg-type]
+                virtual = virtual if derived is False else derived
+            model = virtual.param_model(distro) if isinstance(virtual, VirtualFile) else None
             status = "ok" if model is not None else "unknown"
             return ResolvedParamFile(path, None, status, span, origin, allow_substs,  # type: ignore[arg-type]
                                      model=model, derived_from=virtual.source if virtual else None)
         source, status = self._locate(path)
         if allow_substs and status == "ok" and path:
-            from physai_lint.resolve.nav2_common import VirtualFile, substituted_workspace_file
-
-            derived = substituted_workspace_file(self.inst.ev, path, span, scope)
+            derived = with_substitutions(self.inst.ev, path, span, scope)
             if derived is not False:
-                distro = getattr(self.inst.packages, "distro", "humble")
                 model = derived.param_model(distro) if isinstance(derived, VirtualFile) else None
                 if model is None:  # its $(...) cannot be performed statically: its values are unknown
                     return ResolvedParamFile(path, None, "unknown", span, origin, allow_substs,  # type: ignore[arg-type]

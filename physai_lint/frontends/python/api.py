@@ -5,6 +5,8 @@ Names are canonicalised to ``<root>.<subpackage>.<Name>`` (``launch_ros.actions.
 """
 from __future__ import annotations
 
+from typing import Any
+
 ROOTS = ("launch", "launch_ros", "launch_xml", "launch_yaml", "nav2_common")
 
 _ACTIONS_LAUNCH = (
@@ -113,3 +115,18 @@ ACTION_KINDS = {
     q for q in KNOWN
     if ".actions." in q or q == "launch.LaunchDescription"
 }
+
+
+def path_parts(obj: Any) -> Any:
+    """The components argument of a PathJoinSubstitution / PathSubstitution (launch >= 3.x, jazzy
+    on) as written: a list/tuple of components, or one component; None for any other class.
+
+    ``PathSubstitution(path)`` normalises ``path`` to a list of substitutions and makes each one a
+    component; ``PathJoinSubstitution(components)`` takes the components as given.
+    """
+    n = short(obj.qual)
+    if n == "PathJoinSubstitution":
+        return obj.arg(0, "substitutions")
+    if n == "PathSubstitution":
+        return obj.arg(0, "path")
+    return None

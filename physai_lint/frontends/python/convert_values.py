@@ -89,7 +89,7 @@ def subst(o: LObj) -> V.Subst:
     if n == "LaunchConfiguration":
         return V.LaunchConfig(_val(o, 0, "variable_name"), opt_value(o, 1, "default"), s)
     if n in ("PathJoinSubstitution", "PathSubstitution"):
-        parts = o.arg(0, "substitutions" if n == "PathJoinSubstitution" else "path")
+        parts = api.path_parts(o)
         if isinstance(parts, (list, tuple)):
             return V.PathJoin(tuple(to_value(p, span_at(parts, i, s)) for i, p in enumerate(parts)), s)
         return V.PathJoin((to_value(parts, s),), s)

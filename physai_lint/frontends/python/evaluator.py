@@ -11,8 +11,8 @@ from collections.abc import Callable
 from typing import Any
 
 from physai_lint.model.launch import Condition
-from physai_lint.model.values import Unknown as UnknownValue
 from physai_lint.model.span import Span
+from physai_lint.model.values import Unknown as UnknownValue
 
 from . import bounds, calls, symbolic
 from .core import (

@@ -316,30 +316,13 @@ class ExpressionsMixin:
 
 
 
-def path_components(obj: LObj) -> list[Any] | None:
-    """The path components of a PathJoinSubstitution / PathSubstitution (launch >= 3.x, jazzy on).
-
-    ``PathSubstitution(path)`` normalises ``path`` to a list of substitutions and makes each one a
-    component; ``PathJoinSubstitution(components)`` takes the components as given.
-    """
-    from . import api
-
-    short = api.short(obj.qual)
-    if short == "PathJoinSubstitution":
-        parts = obj.arg(0, "substitutions")
-    elif short == "PathSubstitution":
-        parts = obj.arg(0, "path")
-    else:
-        return None
-    if isinstance(parts, (list, tuple)):
-        return list(parts)
-    return [parts]
-
-
 def _path_div(left: LObj, right: Any, span: Span) -> LObj | None:
     """``PathJoinSubstitution.__truediv__``: a new PathJoinSubstitution with one more component."""
-    parts = path_components(left)
-    if parts is None:
+    from . import api
+
+    if api.short(left.qual) not in ("PathJoinSubstitution", "PathSubstitution"):
         return None
+    parts = api.path_parts(left)
+    components = list(parts) if isinstance(parts, (list, tuple)) else [parts]
     qual = left.qual.rsplit(".", 1)[0] + ".PathJoinSubstitution"
-    return LObj(qual, [parts + [right]], {}, left.node, span, [span], {})
+    return LObj(qual, [components + [right]], {}, left.node, span, [span], {})

@@ -33,8 +33,6 @@ from .runtime import LObj, Opaque, UserFunc
 __all__ = ["parse_python_launch"]
 
 
-MAX_PYTHON_CHARS = 2_000_000  # 80 times the largest launch.py in a corpus of public ROS 2 repos
-
 def _syntax_error(path: str, text: str, err: BaseException) -> FrontendResult:
     if isinstance(err, SyntaxError):
         line = err.lineno or 1
@@ -55,12 +53,6 @@ def _syntax_error(path: str, text: str, err: BaseException) -> FrontendResult:
 
 def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | None] | None = None) -> FrontendResult:
     """Parse and statically evaluate a ``.launch.py`` file into the launch IR."""
-    if len(text) > MAX_PYTHON_CHARS:  # the AST alone of a 50 MB file needs more than 6 GB
-        return FrontendResult(launch=None, diagnostics=[Diagnostic(
-            code="X002", span=Span.whole_file(path),
-            message=f"file is {len(text) // 1_000_000} MB, larger than the "
-                    f"{MAX_PYTHON_CHARS // 1_000_000} MB limit for Python launch files",
-            help="split the launch file, or exclude it from the check", key="file is too large")])
     try:
         tree = ast.parse(text, filename=path)
     except (SyntaxError, ValueError, RecursionError, MemoryError) as err:

@@ -10,7 +10,7 @@ from physai_lint.model import launch as ir
 from physai_lint.model import values as v
 from physai_lint.model.span import Span
 from physai_lint.resolve import names
-from physai_lint.resolve.evaluate import Scope
+from physai_lint.resolve.evaluate import TRUE_WORDS, Scope
 from physai_lint.resolve.model import (
     EffRemap,
     NodeInstance,
@@ -206,9 +206,10 @@ class NodeBuilder:
             # (component_manager.cpp :: OnLoadNode / create_node_options); otherwise launch sends
             # no namespace and the node gets its constructor's default, the root namespace.
             forward = self._forwards_global_arguments(cn, scope)
-            namespace = container_ns if forward is not False else "/"
-            if forward is None:
-                namespace = container_ns if container_ns == "/" else None
+            if forward is None:  # unknown: known only when both ways give the root namespace
+                namespace = "/" if container_ns == "/" else None
+            else:
+                namespace = container_ns if forward else "/"
         fqn = names.join_fqn(namespace, name) if (namespace and name) else None
         node_id = self._id()
         remaps, gparams = self._global_sources(scope, node_id)
@@ -233,7 +234,7 @@ class NodeBuilder:
             text = self.inst.ev.eval(value, scope)
             if text is None:
                 return None
-            return text.strip().lower() in ("true", "1")
+            return text.strip().lower() in TRUE_WORDS
         return False
 
     def load(self, a: ir.LoadComposableNodes, scope: Scope) -> None:

@@ -8,10 +8,12 @@ diagnostics and the offending substitution an ``Unknown``.
 """
 from __future__ import annotations
 
+import bisect
 import difflib
 import re
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
+from typing import Any
 
 from physai_lint.model.findings import Diagnostic
 from physai_lint.model.span import Span
@@ -81,17 +83,31 @@ class _Ctx:
         return Span(self.file, l1, c1, l2, c2)
 
 
-def positions_from(text: str, line: int, col: int) -> list[tuple[int, int]]:
-    """(line, col) of every character of ``text`` (and one past the end), starting at line:col."""
-    out: list[tuple[int, int]] = []
-    for ch in text:
-        out.append((line, col))
-        if ch == "\n":
-            line, col = line + 1, 1
-        else:
-            col += 1
-    out.append((line, col))
-    return out
+class positions_from(Sequence[tuple[int, int]]):  # noqa: N801 - used like the function it was
+    """(line, col) of every character of ``text`` (and one past the end), starting at line:col.
+
+    Computed on access from the line starts: a whole parameter file parsed for ``$(...)`` asks for
+    a handful of positions out of tens of thousands of characters."""
+
+    def __init__(self, text: str, line: int, col: int) -> None:
+        self.n = len(text) + 1
+        self.line, self.col = line, col
+        self.starts = [m.end() for m in re.finditer("\n", text)]
+
+    def __len__(self) -> int:
+        return self.n
+
+    def __getitem__(self, index: Any) -> Any:
+        if isinstance(index, slice):
+            return [self[i] for i in range(*index.indices(self.n))]
+        if index < 0:
+            index += self.n
+        if not 0 <= index < self.n:
+            raise IndexError(index)
+        k = bisect.bisect_right(self.starts, index)
+        if k == 0:
+            return self.line, self.col + index
+        return self.line + k, index - self.starts[k - 1] + 1
 
 
 def parse_substitutions(
@@ -102,7 +118,7 @@ def parse_substitutions(
     ``positions`` (optional, ``len(text) + 1`` entries) maps each character to its source line/col
     when the value is not a verbatim copy of the source (XML entity references, folded YAML).
     """
-    pos = list(positions) if positions is not None and len(positions) == len(text) + 1 \
+    pos = positions if positions is not None and len(positions) == len(text) + 1 \
         else positions_from(text, span.line, span.col)
     ctx = _Ctx(text, pos, span.file, [])
     if not text:

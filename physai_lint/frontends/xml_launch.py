@@ -101,8 +101,9 @@ class _Reader:
             name_off, value_off, raw = found
             norm, offs = _normalise(raw, value_off)
             end = value_off + len(raw)
-            positions = [self.lines.lc(o) for o in offs] + [self.lines.lc(end)] \
-                if norm == value else None
+            # A verbatim value (the usual case) needs no table: its characters follow its start.
+            positions = None if norm != value or raw == value else \
+                [self.lines.lc(o) for o in offs] + [self.lines.lc(end)]
             el.attrs[name] = Attr(name, value, self.lines.span(name_off, name_off + len(name)),
                                   self.lines.span(value_off, end), positions)
         if self.stack:

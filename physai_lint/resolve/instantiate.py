@@ -79,9 +79,8 @@ class Instantiator:
         if span is None:
             return
         self.result.config_reads.append(ConfigRead(name, span, defined, has_default, self.frame.active))
-        for arg in self.result.declared_args:
-            if arg.name == name:
-                arg.reads += 1
+        for arg in self.declared_by_name.get(name, ()):
+            arg.reads += 1
 
     def _on_package(self, name: str, span: Span | None) -> None:
         self.result.package_refs.append((name, span, self.frame.file))
@@ -99,6 +98,7 @@ class Instantiator:
     # ---- entry -------------------------------------------------------------------------------
     def run(self, entry: str, cli_args: dict[str, str]) -> LaunchResult:
         self.result = LaunchResult(entry=entry, arguments=dict(cli_args))
+        self.declared_by_name: dict[str, list[DeclaredArg]] = {}  # result.declared_args by name
         scope = Scope(configs=dict(cli_args))
         self.top_configs = scope.configs
         self.frame = Frame(entry, True, (entry,), passed=frozenset(cli_args))
@@ -220,11 +220,13 @@ class Instantiator:
         else:
             value = None
             scope.configs[a.name] = None  # real launch raises; keep going with an unknown value
-        self.result.declared_args.append(DeclaredArg(
+        decl = DeclaredArg(
             name=a.name, span=a.name_span or a.span, file=self.frame.file, default=default,
             default_known=a.default is None or default is not None, has_default=a.default is not None,
             choices=a.choices, value=value, value_origin=origin,  # type: ignore[arg-type]
-        ))
+        )
+        self.result.declared_args.append(decl)
+        self.declared_by_name.setdefault(a.name, []).append(decl)
 
     # ---- namespaces and global lists -------------------------------------------------------------
     def _push_namespace(self, a: ir.PushNamespace, scope: Scope) -> None:

@@ -17,6 +17,8 @@ values it writes unknown; an unknown source, root key, key rewrite or dict makes
 from __future__ import annotations
 
 import dataclasses
+import hashlib
+from collections import OrderedDict
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
@@ -326,39 +328,71 @@ def _rewritten_yaml(ev: Evaluator, p: v.RewrittenYaml, path: str, params: Any, k
     if src is None:
         return None
     text, file, virtual = src
-    loaded = _load(text, file, _node_spans(file, virtual))
-    if loaded is None:
-        return None
-    data, spans = loaded
-    rewrite_spans = dict(params[1])
-    for key, span in values[1].items():
-        rewrite_spans["=" + key] = span
-    rw = _Rewriter(p.convert_types, spans, rewrite_spans)
-    try:
-        rw.substitute_params(data, params[0])
-        rw.add_params(data, params[0])
-        rw.substitute_keys(data, keys[0])
-        rw.substitute_values(data, values[0])
-    except Exception:  # noqa: BLE001 - RewrittenYaml raises here too: the launch fails
-        return None
     fallback = p.span or Span.whole_file(file)
-    if root:
-        data = {root: data}
-        rspan = v.span_of(p.root_key) or fallback
-        spans[id(data)] = {root: (rspan, rspan)}
-    try:
-        dumped = yaml.dump(data)
-    except yaml.YAMLError:
-        return None
-    out = _register(ev, "RewrittenYaml", dumped, fallback, virtual.source if virtual else file)
-    _map_positions(out, dumped, data, spans)
-    return out.path
+    root_span = (v.span_of(p.root_key) or fallback) if root else None
+    # Everything the written file and its positions depend on; the file itself then serves every
+    # entry of the run that asks for the same rewrite (nav2: each bringup entry, ~0.1 s each).
+    key = ("RewrittenYaml", text, file, virtual.path if virtual else None, tuple(params[0].items()),
+           tuple(params[1].items()), tuple(keys[0].items()), tuple(values[0].items()), tuple(values[1].items()),
+           root, root_span, p.convert_types, fallback)
+
+    def make(vpath: str) -> VirtualFile | None:
+        loaded = _load(text, file, _node_spans(file, virtual))
+        if loaded is None:
+            return None
+        data, spans = loaded
+        rewrite_spans = dict(params[1])
+        for k, span in values[1].items():
+            rewrite_spans["=" + k] = span
+        rw = _Rewriter(p.convert_types, spans, rewrite_spans)
+        try:
+            rw.substitute_params(data, params[0])
+            rw.add_params(data, params[0])
+            rw.substitute_keys(data, keys[0])
+            rw.substitute_values(data, values[0])
+        except Exception:  # noqa: BLE001 - RewrittenYaml raises here too: the launch fails
+            return None
+        if root:
+            data = {root: data}
+            spans[id(data)] = {root: (root_span, root_span)}
+        try:
+            dumped = yaml.dump(data, Dumper=_DUMPER)
+        except yaml.YAMLError:
+            return None
+        out = VirtualFile(vpath, dumped, {}, fallback, virtual.source if virtual else file)
+        _map_positions(out, dumped, data, spans)
+        return out
+
+    out = _shared(ev, key, make)
+    return out.path if out is not None else None
 
 
-def _register(ev: Evaluator, kind: str, text: str, fallback: Span, source: str | None) -> VirtualFile:
-    path = f"{VIRTUAL_DIR}/{kind}-{len(ev.virtual) + 1}.yaml"
-    vf = VirtualFile(path, text, {}, fallback, source)
-    ev.virtual[path] = vf
+# ``yaml.dump``'s Dumper with libyaml's emitter where installed: the same representer and resolver
+# choose tags and styles, and on the ~900 YAML files of public ROS 2 repositories the text is the
+# same except the ``...`` after a bare scalar document, which a RewrittenYaml never writes.
+_DUMPER = getattr(yaml, "CDumper", yaml.Dumper)
+
+# The temporary files of one process, by everything that decides their text and positions: the
+# same input gives the same file (and the same parsed model) to every entry and every run.
+_SHARED: OrderedDict[tuple[Any, ...], VirtualFile | None] = OrderedDict()
+_SHARED_MAX = 512
+
+
+def _shared(ev: Evaluator, key: tuple[Any, ...], make: Callable[[str], VirtualFile | None]) -> VirtualFile | None:
+    """The virtual file for ``key``, made once; registered with ``ev`` so that later substitutions
+    of this entry find it by path. Its path is named by the key's digest, so it is the same in every
+    entry and in every process (``--jobs``)."""
+    if key in _SHARED:
+        _SHARED.move_to_end(key)
+        vf = _SHARED[key]
+    else:
+        digest = hashlib.sha256(repr(key).encode("utf-8", "surrogatepass")).hexdigest()[:16]
+        vf = make(f"{VIRTUAL_DIR}/{key[0]}-{digest}.yaml")
+        _SHARED[key] = vf
+        if len(_SHARED) > _SHARED_MAX:
+            _SHARED.popitem(last=False)
+    if vf is not None:
+        ev.virtual[vf.path] = vf
     return vf
 
 
@@ -432,27 +466,32 @@ def replace_string(ev: Evaluator, p: v.ReplaceString, scope: Scope) -> str | Non
 def _derive(ev: Evaluator, kind: str, new: str, text: str, file: str, virtual: VirtualFile | None,
             span: Span | None) -> VirtualFile | None:
     """A temporary copy of a file with some lines changed: positions stay those of the source on
-    unchanged lines; a changed line points at the last value written on it."""
+    unchanged lines; a changed line points at the last value written on it. The same file with
+    the same lines changed is one temporary file (and one model)."""
     if new.count("\n") != text.count("\n"):
         return None  # a replacement added lines: positions cannot be kept (rare); stay silent
     fallback = span or Span.whole_file(file)
-    out = _register(ev, kind, new, fallback, virtual.source if virtual else file)
-    changed = {i + 1 for i, (a, b) in enumerate(zip(text.splitlines(), new.splitlines())) if a != b}
-    by_line: dict[int, list[tuple[int, Span]]] = {}
-    if virtual is not None:
-        for (ln, col), sp in virtual.origin.items():
-            by_line.setdefault(ln, []).append((col, sp))
 
-    def line_origin(line: int, col: int) -> Span | None:
-        if virtual is None:
-            return Span(file, line, col, line, col + 1) if line not in changed else Span(file, line, 1, line, 2)
-        if line not in changed:
-            return virtual.span_of(line, col)
-        hits = sorted(by_line.get(line, []))
-        return hits[-1][1] if hits else virtual.span_of(line, 1)
+    def make(vpath: str) -> VirtualFile:
+        out = VirtualFile(vpath, new, {}, fallback, virtual.source if virtual else file)
+        changed = {i + 1 for i, (a, b) in enumerate(zip(text.splitlines(), new.splitlines())) if a != b}
+        by_line: dict[int, list[tuple[int, Span]]] = {}
+        if virtual is not None:
+            for (ln, col), sp in virtual.origin.items():
+                by_line.setdefault(ln, []).append((col, sp))
 
-    out.line_origin = line_origin
-    return out
+        def line_origin(line: int, col: int) -> Span | None:
+            if virtual is None:
+                return Span(file, line, col, line, col + 1) if line not in changed else Span(file, line, 1, line, 2)
+            if line not in changed:
+                return virtual.span_of(line, col)
+            hits = sorted(by_line.get(line, []))
+            return hits[-1][1] if hits else virtual.span_of(line, 1)
+
+        out.line_origin = line_origin
+        return out
+
+    return _shared(ev, (kind, new, text, file, virtual.path if virtual else None, fallback), make)
 
 
 def _substitutions_of(ev: Evaluator, text: str, file: str) -> Any:
@@ -464,16 +503,6 @@ def _substitutions_of(ev: Evaluator, text: str, file: str) -> Any:
 
         value, diags = parse_substitutions(text, Span(file, 1, 1, 1, 2))
         memo[key] = None if diags else value
-    return memo[key]
-
-
-def _derived_once(ev: Evaluator, new: str, text: str, file: str, virtual: VirtualFile | None,
-                  span: Span | None) -> VirtualFile | None:
-    """The same file with the same substitutions performed is one temporary file (and one model)."""
-    memo = ev.file_memo
-    key = ("derived", file, new, span)
-    if key not in memo:
-        memo[key] = _derive(ev, "ParameterFile", new, text, file, virtual, span)
     return memo[key]
 
 
@@ -495,7 +524,7 @@ def with_substitutions(ev: Evaluator, path: str, span: Span, scope: Scope) -> Vi
     new = ev.eval(value, scope)
     if new is None:
         return None
-    return _derived_once(ev, new, text, file, virtual, virtual.fallback if virtual else span)
+    return _derive(ev, "ParameterFile", new, text, file, virtual, virtual.fallback if virtual else span)
 
 
 def has_node_params(ev: Evaluator, p: v.HasNodeParams, scope: Scope) -> str | None:

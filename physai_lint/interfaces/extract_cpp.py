@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import functools
 import re
-from dataclasses import dataclass
+from typing import NamedTuple
 
 from physai_lint.model.span import Span
 
@@ -22,8 +22,9 @@ from .model import Endpoint, NodeInterface, ParamDecl
 MAX_SOURCE = 2_000_000
 
 
-@dataclass(frozen=True, slots=True)
-class Tok:
+class Tok(NamedTuple):
+    """One token (a tuple: a source file makes tens of thousands of them)."""
+
     kind: str  # "id", "str", "num", "char", "op"
     text: str  # for "str": the decoded literal contents
     line: int
@@ -32,7 +33,8 @@ class Tok:
     end_col: int
 
 
-_ID_START = re.compile(r"[A-Za-z_]")
+_ID_START_CHARS = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz_")
+_BLANKS = re.compile(r"[ \t\r\f\v\\]+")
 _ID = re.compile(r"[A-Za-z_0-9]*")
 _NUM = re.compile(r"(?:0[xX][0-9a-fA-F']+|[0-9][0-9']*\.?[0-9']*(?:[eE][+-]?[0-9]+)?|\.[0-9]+(?:[eE][+-]?[0-9]+)?)[uUlLfF]*")
 _STR_PREFIX = ("u8R", "uR", "UR", "LR", "R", "u8", "u", "U", "L")
@@ -54,13 +56,13 @@ def tokenize(text: str) -> list[Tok]:
             i += 1
             continue
         if c in " \t\r\f\v\\":
-            i += 1
+            i = _BLANKS.match(text, i).end()  # type: ignore[union-attr]
             continue
-        if text.startswith("//", i):
+        if c == "/" and text.startswith("//", i):
             j = text.find("\n", i)
             i = n if j < 0 else j
             continue
-        if text.startswith("/*", i):
+        if c == "/" and text.startswith("/*", i):
             j = text.find("*/", i + 2)
             j = n if j < 0 else j + 2
             line += text.count("\n", i, j)
@@ -97,7 +99,8 @@ def tokenize(text: str) -> list[Tok]:
             continue
         # string literals, with prefixes and raw strings
         prefix = ""
-        if _ID_START.match(c):
+        is_id = c in _ID_START_CHARS
+        if is_id and c in "uULR":
             for p in _STR_PREFIX:
                 if text.startswith(p, i) and i + len(p) < n and text[i + len(p)] == '"':
                     prefix = p
@@ -150,7 +153,7 @@ def tokenize(text: str) -> list[Tok]:
             toks.append(Tok("char", text[i + 1:j], sl, sc, sl, sc + (j - i + 1)))
             i = j + 1
             continue
-        if _ID_START.match(c):
+        if is_id:
             m = _ID.match(text, i + 1)
             j = m.end() if m else i + 1
             sl, sc = pos(i)
@@ -425,7 +428,15 @@ def _tokens(text: str) -> list[Tok]:
     return tokenize(text)
 
 
+# Every call _extract_one looks for names one of these; a file without any has nothing to give
+# (two thirds of the C++ files of a workspace), and tokenizing it is most of the cost.
+_CALL_WORDS = re.compile(r"create_(?:publisher|subscription|service|client|server)|advertise|subscribe"
+                         r"|declare_(?:parameter|or_get_parameter)")
+
+
 def _extract_one(path: str, text: str, iface: NodeInterface) -> None:
+    if not _CALL_WORDS.search(text):
+        return
     toks = _tokens(text)
     consts = _constants(toks)
     read_only = _read_only_descriptors(toks)

@@ -337,7 +337,7 @@ def _rewritten_yaml(ev: Evaluator, p: v.RewrittenYaml, path: str, params: Any, k
            root, root_span, p.convert_types, fallback)
 
     def make(vpath: str) -> VirtualFile | None:
-        loaded = _load(text, file, _node_spans(file, virtual))
+        loaded = _loaded_copy(text, file, virtual)
         if loaded is None:
             return None
         data, spans = loaded
@@ -365,6 +365,49 @@ def _rewritten_yaml(ev: Evaluator, p: v.RewrittenYaml, path: str, params: Any, k
 
     out = _shared(ev, key, make)
     return out.path if out is not None else None
+
+
+_LOADED: OrderedDict[tuple[str, str, str | None], Any] = OrderedDict()
+_LOADED_MAX = 32
+
+
+def _loaded_copy(text: str, file: str, virtual: VirtualFile | None
+                 ) -> tuple[Any, dict[int, dict[Any, tuple[Span, Span]]]] | None:
+    """``_load`` of a source, loaded once per process and handed out as a fresh copy (the rewrite
+    changes it in place): one nav2_params.yaml serves every distinct rewrite of it. Objects that
+    YAML aliases share stay shared in the copy, as in ``yaml.safe_load``'s result."""
+    key = (text, file, virtual.path if virtual else None)
+    if key in _LOADED:
+        _LOADED.move_to_end(key)
+    else:
+        _LOADED[key] = _load(text, file, _node_spans(file, virtual))
+        if len(_LOADED) > _LOADED_MAX:
+            _LOADED.popitem(last=False)
+    loaded = _LOADED[key]
+    if loaded is None:
+        return None
+    data, spans = loaded
+    out_spans: dict[int, dict[Any, tuple[Span, Span]]] = {}
+    made: dict[int, Any] = {}
+
+    def copy(obj: Any) -> Any:
+        if not isinstance(obj, (dict, list)):
+            return obj
+        if id(obj) in made:
+            return made[id(obj)]
+        new: Any = {} if isinstance(obj, dict) else []
+        made[id(obj)] = new
+        if isinstance(obj, dict):
+            for k, x in obj.items():
+                new[k] = copy(x)
+        else:
+            new.extend(copy(x) for x in obj)
+        table = spans.get(id(obj))
+        if table is not None:
+            out_spans[id(new)] = dict(table)
+        return new
+
+    return copy(data), out_spans
 
 
 # ``yaml.dump``'s Dumper with libyaml's emitter where installed: the same representer and resolver

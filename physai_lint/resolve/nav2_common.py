@@ -71,7 +71,10 @@ class VirtualFile:
 # ---- reading the source -----------------------------------------------------------------------
 
 
-class _RecordingLoader(getattr(yaml, "CSafeLoader", yaml.SafeLoader)):  # type: ignore[misc]
+_SAFE_LOADER = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+
+
+class _RecordingLoader(_SAFE_LOADER):  # type: ignore[misc]
     """PyYAML's SafeLoader, remembering which node made which object (to keep positions). The
     libyaml parser when available: same nodes and marks, and the pure-Python one made resolving
     navigation2 take 160 s of CPU (47 RewrittenYaml loads of nav2_params.yaml per entry)."""
@@ -442,15 +445,19 @@ def _shared(ev: Evaluator, key: tuple[Any, ...], make: Callable[[str], VirtualFi
 def _map_positions(vf: VirtualFile, dumped: str, data: Any,
                    spans: dict[int, dict[Any, tuple[Span, Span]]]) -> None:
     """Map each node of the dumped text to where the same value came from."""
-    loader = _RecordingLoader(dumped)
+    # Composed only (libyaml): the values are ``data`` already; only mapping keys are constructed.
+    loader = _SAFE_LOADER(dumped)
     try:
         node = loader.get_single_node()
-        if node is not None:
-            loader.construct_document(node)
     except (yaml.YAMLError, ValueError, TypeError, RecursionError):
-        return
-    finally:
         loader.dispose()
+        return
+
+    def key_of(kn: Any) -> Any:
+        try:
+            return loader.construct_object(kn, deep=True)
+        except (yaml.YAMLError, ValueError, TypeError, RecursionError):
+            return None
 
     def at(n: Any) -> tuple[int, int]:
         return n.start_mark.line + 1, n.start_mark.column + 1
@@ -459,7 +466,7 @@ def _map_positions(vf: VirtualFile, dumped: str, data: Any,
         table = spans.get(id(obj), {})
         if isinstance(n, yaml.MappingNode) and isinstance(obj, dict):
             for kn, vn in n.value:
-                key = loader.made.get(id(kn), (None, None))[1]
+                key = key_of(kn)
                 try:
                     hit = table.get(key)
                     child = obj.get(key)
@@ -479,6 +486,7 @@ def _map_positions(vf: VirtualFile, dumped: str, data: Any,
 
     if node is not None:
         walk(node, data)
+    loader.dispose()
 
 
 def replace_string(ev: Evaluator, p: v.ReplaceString, scope: Scope) -> str | None:

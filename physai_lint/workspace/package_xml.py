@@ -4,8 +4,11 @@ approximate; we add what it lacks: the line of every dependency, for messages.""
 from __future__ import annotations
 
 import re
+import sys
+import types
 import warnings
 from dataclasses import dataclass, field
+from typing import Any
 
 _DEP_RX = re.compile(r"<(depend|exec_depend|run_depend)\b[^>]*>\s*([^<\s]+)\s*</\1\s*>", re.DOTALL)
 _NAME_RX = re.compile(r"<name>\s*([^<\s]+)\s*</name>")
@@ -40,9 +43,40 @@ def parse_manifest(text: str, filename: str, distro: str) -> ManifestInfo:
         return _parse_manifest(text, filename, distro)
 
 
-def _parse_manifest(text: str, filename: str, distro: str) -> ManifestInfo:
-    from catkin_pkg.package import parse_package_string  # type: ignore[import-untyped]  # deferred: the import costs ~50 ms
+def _evaluate_condition(condition: str | None, context: dict[str, str]) -> bool:
+    if condition is None:
+        return True
+    from catkin_pkg.condition import evaluate_condition  # type: ignore[import-untyped]
 
+    return bool(evaluate_condition(condition, context))
+
+
+def _catkin_parser() -> Any:
+    """``catkin_pkg.package.parse_package_string``, imported without pyparsing.
+
+    ``catkin_pkg.package`` and its group modules import ``catkin_pkg.condition`` for
+    ``evaluate_condition`` only, and that module imports pyparsing (~25 ms, more than the rest of
+    catkin_pkg) although a manifest without ``condition`` attributes never parses a condition. They
+    are imported against a stand-in that answers ``None`` conditions and imports the real module on
+    the first actual condition, so every result is still catkin_pkg's own.
+    """
+    if "catkin_pkg.package" not in sys.modules and "catkin_pkg.condition" not in sys.modules:
+        stand_in = types.ModuleType("catkin_pkg.condition")
+        stand_in.evaluate_condition = _evaluate_condition  # type: ignore[attr-defined]
+        sys.modules["catkin_pkg.condition"] = stand_in
+        try:
+            import catkin_pkg.group_dependency  # type: ignore[import-untyped]
+            import catkin_pkg.group_membership  # type: ignore[import-untyped]
+            import catkin_pkg.package  # type: ignore[import-untyped]  # noqa: F401
+        finally:
+            del sys.modules["catkin_pkg.condition"]
+    from catkin_pkg.package import parse_package_string
+
+    return parse_package_string
+
+
+def _parse_manifest(text: str, filename: str, distro: str) -> ManifestInfo:
+    parse_package_string = _catkin_parser()
     lines = dependency_lines(text)
     try:
         pkg_warnings: list[str] = []

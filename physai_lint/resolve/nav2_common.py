@@ -374,11 +374,9 @@ _LOADED: OrderedDict[tuple[str, str, str | None], Any] = OrderedDict()
 _LOADED_MAX = 32
 
 
-def _loaded_copy(text: str, file: str, virtual: VirtualFile | None
-                 ) -> tuple[Any, dict[int, dict[Any, tuple[Span, Span]]]] | None:
-    """``_load`` of a source, loaded once per process and handed out as a fresh copy (the rewrite
-    changes it in place): one nav2_params.yaml serves every distinct rewrite of it. Objects that
-    YAML aliases share stay shared in the copy, as in ``yaml.safe_load``'s result."""
+def _loaded(text: str, file: str, virtual: VirtualFile | None
+            ) -> tuple[Any, dict[int, dict[Any, tuple[Span, Span]]]] | None:
+    """``_load`` of a source, once per process: the caller must not change it."""
     key = (text, file, virtual.path if virtual else None)
     if key in _LOADED:
         _LOADED.move_to_end(key)
@@ -386,7 +384,15 @@ def _loaded_copy(text: str, file: str, virtual: VirtualFile | None
         _LOADED[key] = _load(text, file, _node_spans(file, virtual))
         if len(_LOADED) > _LOADED_MAX:
             _LOADED.popitem(last=False)
-    loaded = _LOADED[key]
+    return _LOADED[key]
+
+
+def _loaded_copy(text: str, file: str, virtual: VirtualFile | None
+                 ) -> tuple[Any, dict[int, dict[Any, tuple[Span, Span]]]] | None:
+    """``_loaded`` handed out as a fresh copy (the rewrite changes it in place): one
+    nav2_params.yaml serves every distinct rewrite of it. Objects that YAML aliases share stay
+    shared in the copy, as in ``yaml.safe_load``'s result."""
+    loaded = _loaded(text, file, virtual)
     if loaded is None:
         return None
     data, spans = loaded
@@ -585,7 +591,7 @@ def has_node_params(ev: Evaluator, p: v.HasNodeParams, scope: Scope) -> str | No
     src = _read_source(ev, path)
     if src is None:
         return None
-    loaded = _load(src[0], src[1], lambda n: _mark_span(src[1], n))
+    loaded = _loaded(*src)
     if loaded is None:
         return None
     data = loaded[0]
@@ -649,8 +655,11 @@ def _has_placeholder(value: Any) -> bool:
 
 def _remap(obj: Any, fn: Callable[[Span], Span], memo: dict[int, Any]) -> Any:
     """``obj`` with every ``Span`` passed through ``fn`` (dataclasses, tuples and lists)."""
-    if isinstance(obj, Span):
+    kind = type(obj)
+    if kind is Span:
         return fn(obj)
+    if kind in _ATOMS:
+        return obj
     if id(obj) in memo:
         return memo[id(obj)]
     out: Any = obj
@@ -659,17 +668,25 @@ def _remap(obj: Any, fn: Callable[[Span], Span], memo: dict[int, Any]) -> Any:
     elif isinstance(obj, list):
         out = [_remap(x, fn, memo) for x in obj]
     elif dataclasses.is_dataclass(obj) and not isinstance(obj, type):
+        names = _FIELD_NAMES.get(kind)
+        if names is None:
+            names = _FIELD_NAMES[kind] = tuple(f.name for f in dataclasses.fields(obj))
         changes = {}
-        for f in dataclasses.fields(obj):
-            old = getattr(obj, f.name)
+        for name in names:
+            old = getattr(obj, name)
             new = _remap(old, fn, memo)
             if new is not old:
-                changes[f.name] = new
+                changes[name] = new
         if changes:
-            if type(obj).__dataclass_params__.frozen:
+            if kind.__dataclass_params__.frozen:  # type: ignore[attr-defined]
                 out = dataclasses.replace(obj, **changes)
             else:
                 for k, x in changes.items():
                     setattr(obj, k, x)
     memo[id(obj)] = out
     return out
+
+
+# Leaves that hold no span: returned as they are, without a memo entry.
+_ATOMS = frozenset({str, int, float, bool, type(None), bytes})
+_FIELD_NAMES: dict[type, tuple[str, ...]] = {}

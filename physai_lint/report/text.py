@@ -114,7 +114,7 @@ class _PlainText:
     def __init__(self, text: str = "", style: str | None = None) -> None:
         self.plain = text.translate(_STRIP)
 
-    def append(self, text: str, style: str | None = None) -> "_PlainText":
+    def append(self, text: str, style: str | None = None) -> _PlainText:
         self.plain += text.translate(_STRIP)
         return self
 

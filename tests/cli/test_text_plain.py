@@ -10,9 +10,9 @@ from hypothesis import strategies as st
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2]))  # tests run without an install
 
-from physai_lint.model.findings import Finding, Related  # noqa: E402
-from physai_lint.model.span import Span  # noqa: E402
-from physai_lint.report import text  # noqa: E402
+from physai_lint.model.findings import Finding, Related
+from physai_lint.model.span import Span
+from physai_lint.report import text
 
 FILE = "/ws/src/demo/launch/a.launch.py"
 # Control codes rich strips, wide and combining characters, line breaks other than "\n", tabs.

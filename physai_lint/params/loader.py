@@ -60,10 +60,12 @@ class _BlockBuilder:
 
 def _span(path: str, ev: Any, end: bool = True) -> Span:
     sm = ev.start_mark
-    em = ev.end_mark if end else ev.start_mark
-    line, col = sm.line + 1, sm.column + 1
-    eline, ecol = em.line + 1, em.column + 1
-    if (eline, ecol) <= (line, col):
+    em = ev.end_mark if end else sm
+    line = sm.line + 1
+    col = sm.column + 1
+    eline = em.line + 1
+    ecol = em.column + 1
+    if eline < line or (eline == line and ecol <= col):
         eline, ecol = line, col + 1
     return Span(path, line, col, eline, ecol)
 
@@ -78,7 +80,18 @@ class _Parser:
         self.text = text
         self.distro = distro
         self.model = ParamFileModel(path=path, distro=distro)
-        self.rcl = RclParams()
+        # rcl's selected parameter (None: none selected), followed through the ops instead of
+        # replaying every op into an RclParams while loading
+        self.current: str | None = None
+        # the selected parameter has had no value yet; ``first_of_name``: no other parameter of the
+        # node has its name (then find_parameter of that name selects it again)
+        self.pending = False
+        self.first_of_name = True
+        self.names: set[str] = set()  # every name a parameter of the selected node ever had
+        self.node_names: dict[str, set[str]] = {}
+        # a parameter may have lost the selection without a value (rcl leaves it unset): only
+        # then does load_param_file replay the ops to find which
+        self.maybe_unset = False
         # rcl state
         self.is_key = True
         self.is_seq = False
@@ -105,15 +118,35 @@ class _Parser:
 
     # -- helpers ----------------------------------------------------------------------------------
     def op(self, *op: Any) -> None:
-        self.model.ops.append(tuple(op))
-        self.rcl.apply([tuple(op)], self.path)
+        self.model.ops.append(op)
+        tag = op[0]
+        if tag == "set":
+            self.pending = False
+            return
+        if tag == "rename":
+            self.current = op[1]
+            self.first_of_name = op[1] not in self.names
+            self.names.add(op[1])
+            return
+        # find_parameter of the name the selection already has keeps the same entry when it is the
+        # first of that name; anything else moves the selection
+        if self.pending and not (tag == "param" and op[1] == self.current and self.first_of_name):
+            self.maybe_unset = True
+        if tag == "param":
+            self.current = op[1]
+            self.names.add(op[1])
+            self.pending = True
+        else:
+            self.current = None
+            self.names = self.node_names.setdefault(op[1], set())
+            self.pending = False
+        self.first_of_name = True
 
     def err(self, code: str, span: Span, message: str, help: str | None = None) -> None:
         raise _RclError(code, span, message, help)
 
     def cur_name(self) -> str:
-        entry = self.rcl.current()
-        return entry.name if entry is not None else ""
+        return self.current if self.current is not None else ""
 
     def raw(self, ev: Any, end_ev: Any = None) -> str:
         start = ev.start_mark.index
@@ -123,19 +156,18 @@ class _Parser:
         return getattr(ev, "value", "") or ""
 
     # -- events ------------------------------------------------------------------------------------
-    def scalar(self, ev: Any) -> None:
+    def scalar(self, ev: Any, span: Span) -> None:
         if self.is_key:
-            self.parse_key(ev)
+            self.parse_key(ev, span)
             self.is_key = False
             return
-        span = _span(self.path, ev)
         if self.map_level < MAP_PARAMS_LVL:
             self.err("P104", self.last_key_span or span,
                      f"parameters must sit under 'ros__parameters': value at line {span.line} "
                      "comes before any 'ros__parameters' key "
                      f"(rcl: \"Cannot have a value before ros__parameters at line {span.line}\")",
                      HELP_STRUCTURE)
-        if not self.have_node or self.rcl.current() is None:
+        if not self.have_node or self.current is None:
             self.err("P104", span,
                      f"'ros__parameters' must be a mapping of parameters, not a value "
                      f"(rcl: \"Cannot have a value before ros__parameters at line {span.line}\")",
@@ -175,8 +207,7 @@ class _Parser:
             self.seq_items.append(typed)
             self.seq_launch.append(launch_value)
 
-    def parse_key(self, ev: Any) -> None:
-        span = _span(self.path, ev)
+    def parse_key(self, ev: Any, span: Span) -> None:
         value = ev.value
         if len(value) == 0:
             self.err("P104", span, f"empty key (rcl: \"No key at line {span.line}\")")
@@ -210,11 +241,10 @@ class _Parser:
             return
         # MAP_PARAMS_LVL
         if self.is_new_map:
-            cur = self.rcl.current()
-            if cur is None:
+            if self.current is None:
                 self.err("P104", span, f"internal error creating param namespace at line "
                          f"{span.line}")
-            self.param_ns = cur.name
+            self.param_ns = self.current
             self.param_ns_count += 1
             self.is_new_map = False
         if self.param_ns is None:
@@ -323,7 +353,7 @@ class _DupTracker:
         self.stack: list[list[Any]] = []  # [kind, expect_key, keys dict]
         self.pending: tuple[str, Span, Span] | None = None  # duplicate key waiting for its value
 
-    def node(self, ev: Any, is_scalar: bool) -> None:
+    def node(self, ev: Any, is_scalar: bool, span: Span | None = None) -> None:
         if self.pending is not None:
             key, span, first = self.pending
             self.pending = None
@@ -341,7 +371,7 @@ class _DupTracker:
                 frame[1] = False
                 if is_scalar:
                     key = ev.value
-                    span = _span(self.path, ev)
+                    span = span or _span(self.path, ev)
                     if key.startswith(PARAMS_KEY):
                         self.model.has_ros_parameters = True
                     first = frame[2].get(key)
@@ -376,9 +406,10 @@ def load_param_file(path: str, text: str, distro: str = "humble") -> ParamFileMo
                 p.model.ok = False
                 break
             if isinstance(ev, yaml.ScalarEvent):
-                dup.node(ev, True)
+                span = _span(path, ev)  # one Span per scalar, shared by both trackers
+                dup.node(ev, True, span)
                 if not p.failed:
-                    _guard(p, p.scalar, ev)
+                    _guard(p, p.scalar, ev, span)
             elif isinstance(ev, yaml.MappingStartEvent):
                 dup.node(ev, False)
                 dup.start("map")
@@ -432,20 +463,22 @@ def load_param_file(path: str, text: str, distro: str = "humble") -> ParamFileMo
         p.model.ok = False
     p.model.blocks = [b.freeze() for b in p.blocks]
     # rclcpp throws "No parameter value set" for a parameter that never got a value ([]).
-    if p.model.ok and not p.failed:
-        for node in p.rcl.nodes.values():
+    if p.model.ok and not p.failed and (p.maybe_unset or p.pending):
+        rcl = RclParams()
+        rcl.apply(p.model.ops, path)
+        for node in rcl.nodes.values():
             for entry in node.entries:
                 if entry.read() is None:
                     fp = entry.created_by
-                    span = None
+                    where = None
                     for b in p.model.blocks:
                         for prm in b.params:
                             if prm.name == entry.name and prm.kind == "not_set" and b.key == node.key:
-                                span = prm.value_span
-                    if span is None:
-                        span = fp.value_span if fp is not None else Span.whole_file(path)
+                                where = prm.value_span
+                    if where is None:
+                        where = fp.value_span if fp is not None else Span.whole_file(path)
                     p.model.diagnostics.append(Diagnostic(
-                        "P104", span,
+                        "P104", where,
                         f"parameter \"{entry.name}\" is an empty array: rcl leaves it unset and "
                         "rclcpp throws \"No parameter value set\" (rclpy gives NOT_SET)",
                         "remove the parameter or give the array at least one element",
@@ -454,9 +487,9 @@ def load_param_file(path: str, text: str, distro: str = "humble") -> ParamFileMo
     return p.model
 
 
-def _guard(p: _Parser, fn: Any, ev: Any) -> None:
+def _guard(p: _Parser, fn: Any, *args: Any) -> None:
     try:
-        fn(ev)
+        fn(*args)
     except _RclError as e:
         p.failed = True
         p.model.ok = False

@@ -8,6 +8,7 @@ place, and the reader takes the first non-empty slot in ``SLOT_ORDER`` (rclcpp
 """
 from __future__ import annotations
 
+from bisect import insort
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -49,6 +50,9 @@ class RclNodeKey:
     key: str
     entries: list[RclEntry] = field(default_factory=list)
     spans: list[tuple[Span, str]] = field(default_factory=list)  # where the key was written
+    # name -> ascending positions in ``entries`` (a rename can give two entries one name; rcl's
+    # linear search finds the first): find_parameter without scanning every entry
+    positions: dict[str, list[int]] = field(default_factory=dict, repr=False, compare=False)
 
 
 class RclParams:
@@ -68,14 +72,16 @@ class RclParams:
         self._idx = None
 
     def find_parameter(self, name: str, param: FileParam | None = None, source: str = "") -> None:
-        if self._node is None:
+        node = self._node
+        if node is None:
             return
-        for i, entry in enumerate(self._node.entries):
-            if entry.name == name:
-                self._idx = i
-                return
-        self._node.entries.append(RclEntry(name, created_by=param, created_source=source))
-        self._idx = len(self._node.entries) - 1
+        found = node.positions.get(name)
+        if found:
+            self._idx = found[0]
+            return
+        self._idx = len(node.entries)
+        node.entries.append(RclEntry(name, created_by=param, created_source=source))
+        node.positions[name] = [self._idx]
 
     def current(self) -> RclEntry | None:
         if self._node is None or self._idx is None:
@@ -84,8 +90,15 @@ class RclParams:
 
     def rename(self, new_name: str) -> None:
         entry = self.current()
-        if entry is not None:
-            entry.name = new_name
+        if entry is None or self._node is None or self._idx is None:
+            return
+        positions = self._node.positions
+        old = positions[entry.name]
+        old.remove(self._idx)
+        if not old:
+            del positions[entry.name]
+        insort(positions.setdefault(new_name, []), self._idx)
+        entry.name = new_name
 
     def set(self, slot: str, value: Any, param: FileParam | None, source: str,
             span: Span | None = None, unknown: bool = False) -> None:

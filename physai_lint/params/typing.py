@@ -9,6 +9,7 @@
 """
 from __future__ import annotations
 
+import functools
 import math
 from typing import Any, Literal
 
@@ -182,6 +183,13 @@ def rcl_type_scalar(text: str, quoted: bool = False, tag: str | None = None,
         return "string", text
     if quoted:
         return "string", text
+    return _rcl_type_plain(text)
+
+
+@functools.lru_cache(maxsize=1 << 16)
+def _rcl_type_plain(text: str) -> tuple[Kind, Any]:
+    # Memoised: parameter files repeat the same few spellings (true, 0.0, 1, frame names) and the
+    # strtoll/strtod mirrors are pure Python; every result is an immutable scalar.
     if text in _TRUE:
         return "bool", True
     if text in _FALSE:
@@ -268,11 +276,24 @@ def pyyaml_scalar(text: str, quoted: bool, tag: str | None) -> Any:
             return text
     if len(text) > MAX_PYYAML_TEXT:
         return text
-    resolved = yaml.resolver.Resolver().resolve(yaml.ScalarNode, text, (True, False))
+    return _pyyaml_plain(text)
+
+
+_RESOLVER = yaml.resolver.Resolver()  # resolve() reads only class-level tables
+
+
+@functools.lru_cache(maxsize=1 << 16)
+def _pyyaml_plain(text: str) -> Any:
+    # Memoised like _rcl_type_plain: the implicit resolver's values (bool, int, float, None,
+    # date/datetime, str) are immutable. Only a constructor is needed, not a whole SafeLoader
+    # (reader, scanner, parser, composer) per scalar; it is still SafeLoader's constructor table.
+    resolved = _RESOLVER.resolve(yaml.ScalarNode, text, (True, False))
     if resolved == YAML_STR_TAG:
         return text
+    constructor = yaml.SafeLoader.__new__(yaml.SafeLoader)
+    yaml.constructor.SafeConstructor.__init__(constructor)
     try:
-        return yaml.SafeLoader("").construct_object(yaml.ScalarNode(resolved, text), deep=True)
+        return constructor.construct_object(yaml.ScalarNode(resolved, text), deep=True)
     except Exception:  # noqa: BLE001
         return text
 

@@ -81,7 +81,10 @@ def build_project(opts: CheckOptions, cwd: str | None = None, progress: Any = No
         raise UsageError(exc.message) from None
     if opts.workspace and not os.path.isdir(root):
         raise UsageError(f'workspace "{opts.workspace}" is not a directory')
-    packages = ws.build_package_index(root, opts.distro, os.environ.get("AMENT_PREFIX_PATH"))
+    # Without a launch file to resolve, the index is read only for the problems of the checked
+    # packages' manifests (nothing resolves, so no rule asks it anything): build only that.
+    scope = None if found.launch_files else sorted(set(paths) | set(found.param_files))
+    packages = ws.build_package_index(root, opts.distro, os.environ.get("AMENT_PREFIX_PATH"), scope)
     from physai_lint.cache import ParseCache
     from physai_lint.parallel import default_jobs
     from physai_lint.progress import Progress

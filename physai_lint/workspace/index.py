@@ -7,6 +7,8 @@ from __future__ import annotations
 import difflib
 import os
 import posixpath
+import re
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from typing import Literal
 
@@ -15,7 +17,7 @@ from ._model import BuildInfo, InstallRule
 from .cmake import read_cmake_package
 from .discovery import UsageError, has_ignore_marker, skip_dir_name
 from .distro import DISTROS, released_packages
-from .package_xml import parse_manifest
+from .package_xml import _NAME_RX, ManifestInfo, parse_manifest
 from .setup_py import read_setup_py
 
 Origin = Literal["workspace", "installed", "distro"]
@@ -444,7 +446,11 @@ def _snapshot(pkg_dir: str) -> tuple[frozenset[str], frozenset[str]]:
 
 
 def build_package_index(workspace_root: str, distro: str = "humble",
-                        ament_prefix_path: str | None = None) -> PackageIndex:
+                        ament_prefix_path: str | None = None,
+                        scope: Iterable[str] | None = None) -> PackageIndex:
+    """The index of the workspace. With ``scope`` (paths), no package is indexed: only the
+    ``problems`` of the manifests of the packages holding those paths are computed (exactly,
+    duplicate names included). That is all a run that resolves no launch file reads."""
     if distro not in DISTROS:
         raise UsageError(f"unknown distro {distro!r}: expected one of {', '.join(DISTROS)}")
     root = _norm(workspace_root)
@@ -465,7 +471,11 @@ def build_package_index(workspace_root: str, distro: str = "humble",
             if not n.startswith("."):
                 index.installed.setdefault(n, prefix)
 
-    for pkg_dir in _find_packages(root) if os.path.isdir(root) else []:
+    pkg_dirs = _find_packages(root) if os.path.isdir(root) else []
+    if scope is not None:
+        _scoped_problems(index, pkg_dirs, scope)
+        return index
+    for pkg_dir in pkg_dirs:
         pkg = _read_package(index, pkg_dir)
         if pkg is None:
             continue
@@ -481,7 +491,74 @@ def build_package_index(workspace_root: str, distro: str = "humble",
     return index
 
 
-def _read_package(index: PackageIndex, pkg_dir: str) -> WorkspacePackage | None:
+_COMMENT_RX = re.compile(r"<!--.*?-->|<\?.*?\?>", re.DOTALL)
+_NAME_ELEMENT_RX = re.compile(r"<name(?:\s[^>]*)?>(.*?)</name\s*>", re.DOTALL)
+
+
+def _scoped_problems(index: PackageIndex, pkg_dirs: list[str], scope: Iterable[str]) -> None:
+    """``problems`` of the manifests ``_in_scope``, as the full build reports them."""
+    first: dict[str, str] = {}
+    for pkg_dir in _in_scope(index, pkg_dirs, scope):
+        man = _read_manifest(index, pkg_dir)
+        if man is None:
+            continue
+        name = man.name or posixpath.basename(pkg_dir)
+        if name in first:
+            msg = (f'duplicate package name "{name}" (also in {first[name]}); '
+                   "colcon refuses to build this workspace")
+            index.problems.append((pkg_dir + "/package.xml", msg, 1))
+        else:
+            first[name] = pkg_dir
+
+
+def _in_scope(index: PackageIndex, pkg_dirs: list[str], scope: Iterable[str]) -> list[str]:
+    """The package directories (in crawl order) whose manifests decide the problems of those
+    holding a scope path: those, and every package whose name may equal one of theirs (the first
+    of a name wins). Names are over-approximated from the text, without catkin_pkg."""
+    dirs = set(pkg_dirs)
+    held: set[str] = set()
+    for path in scope:
+        d = posixpath.dirname(_norm(path))
+        while d and d not in dirs:
+            parent = posixpath.dirname(d)
+            d = "" if parent == d else parent
+        if d:
+            held.add(d)
+    wanted: set[str] = set()
+    for d in held:
+        names = _possible_names(index, d)
+        if names is None:
+            return pkg_dirs  # a name we cannot bound: every package may collide with it
+        wanted |= names
+    out = []
+    for d in pkg_dirs:
+        names = set() if d in held else _possible_names(index, d)
+        if d in held or names is None or names & wanted:
+            out.append(d)
+    return out
+
+
+def _possible_names(index: PackageIndex, pkg_dir: str) -> set[str] | None:
+    """Every name ``_read_package`` may give a package (catkin_pkg's <name>, the fallback regex,
+    the directory name), or None when the text could hide it (entities, CDATA, markup)."""
+    text = index.read_text(pkg_dir + "/package.xml")
+    if text is None:
+        return set()  # unreadable: not indexed under any name
+    names = {posixpath.basename(pkg_dir)}
+    fallback = _NAME_RX.search(text)
+    if fallback:
+        names.add(fallback.group(1))
+    if "<![CDATA[" in text:
+        return None
+    for m in _NAME_ELEMENT_RX.finditer(_COMMENT_RX.sub("", text)):
+        value = m.group(1)
+        if "&" in value or "<" in value or "\r" in value:
+            return None
+        names.add(value.strip(" \n\r\t"))  # as catkin_pkg _get_node_value
+    return names
+
+
+def _read_manifest(index: PackageIndex, pkg_dir: str) -> ManifestInfo | None:
     xml_path = pkg_dir + "/package.xml"
     text = index.read_text(xml_path)
     if text is None:
@@ -490,6 +567,14 @@ def _read_package(index: PackageIndex, pkg_dir: str) -> WorkspacePackage | None:
     man = parse_manifest(text, xml_path, index.distro)
     if man.error is not None:
         index.problems.append((xml_path, man.error[0], man.error[1]))
+    return man
+
+
+def _read_package(index: PackageIndex, pkg_dir: str) -> WorkspacePackage | None:
+    xml_path = pkg_dir + "/package.xml"
+    man = _read_manifest(index, pkg_dir)
+    if man is None:
+        return None
     name = man.name or posixpath.basename(pkg_dir)
     files, dirs = _snapshot(pkg_dir)
     build_type = man.build_type

@@ -43,6 +43,7 @@ class FileStore:
     params: dict[str, Any] = field(default_factory=dict)  # path -> ParamFile model or None
     param_diagnostics: list[Diagnostic] = field(default_factory=list)  # crashes of the param loader
     cache: Any = None  # a cache.ParseCache, or None
+    distro: str = ""  # what Python launch files read as ROS_DISTRO; set by preload
 
     def text(self, path: str) -> str | None:
         if path in self.texts:
@@ -89,7 +90,7 @@ class FileStore:
         text = self.text(path)
         result = None
         if text is not None and launch_format(path) is not None:
-            job = Job("launch", path, text)
+            job = Job("launch", path, text, self.distro)
             value = self._cached(job)
             if value is None:
                 value, ok = run_job(job, reader or self.text)
@@ -119,7 +120,8 @@ class FileStore:
         """Parse these files now: cached ones from disk, the others in a pool when worth it."""
         from physai_lint import parallel
 
-        todo = [Job("launch", p, "") for p in sorted(set(launches)) if p not in self.launches
+        self.distro = distro
+        todo = [Job("launch", p, "", distro) for p in sorted(set(launches)) if p not in self.launches
                 and launch_format(p) is not None]
         todo += [Job("params", p, "", distro) for p in sorted(set(params)) if p not in self.params]
         misses: list[Job] = []
@@ -176,7 +178,8 @@ class FileStore:
 
 @dataclass(frozen=True)
 class Job:
-    """One file to parse: ``kind`` is "launch" or "params"; ``distro`` matters for params only."""
+    """One file to parse: ``kind`` is "launch" or "params"; ``distro`` is part of the cache key
+    (parameter typing and ``ROS_DISTRO`` in Python launch files depend on it)."""
 
     kind: str
     path: str
@@ -212,7 +215,7 @@ def run_job(job: Job, reader: Callable[[str], str | None] | None) -> tuple[Any, 
         read = read_text_file
     else:
         read = reader
-    result = parse_launch_text(job.path, job.text, recording, diags)
+    result = parse_launch_text(job.path, job.text, recording, diags, job.distro)
     return (result, diags), not reads and not any(d.code == "X003" for d in diags)
 
 
@@ -226,7 +229,7 @@ MAX_LAUNCH_CHARS = 2_000_000
 
 
 def parse_launch_text(path: str, text: str, reader: Callable[[str], str | None],
-                      sink: list[Diagnostic]) -> LaunchFile | None:
+                      sink: list[Diagnostic], distro: str = "") -> LaunchFile | None:
     fmt = launch_format(path)
     if fmt is not None and len(text) > MAX_LAUNCH_CHARS:
         sink.append(Diagnostic(
@@ -239,7 +242,7 @@ def parse_launch_text(path: str, text: str, reader: Callable[[str], str | None],
         if fmt == "python":
             from physai_lint.frontends.python import parse_python_launch
 
-            res = parse_python_launch(path, text, reader)
+            res = parse_python_launch(path, text, reader, distro or None)
         elif fmt == "xml":
             from physai_lint.frontends.xml_launch import parse_xml_launch
 

@@ -51,13 +51,17 @@ def _syntax_error(path: str, text: str, err: BaseException) -> FrontendResult:
     return FrontendResult(launch=None, diagnostics=[diag])
 
 
-def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | None] | None = None) -> FrontendResult:
-    """Parse and statically evaluate a ``.launch.py`` file into the launch IR."""
+def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | None] | None = None,
+                        distro: str | None = None) -> FrontendResult:
+    """Parse and statically evaluate a ``.launch.py`` file into the launch IR.
+
+    ``distro`` is what ``os.environ['ROS_DISTRO']``/``os.getenv('ROS_DISTRO')`` read; without it
+    they are unknown like every other environment variable."""
     try:
         tree = ast.parse(text, filename=path)
     except (SyntaxError, ValueError, RecursionError, MemoryError) as err:
         return _syntax_error(path, text, err)
-    ev = Evaluator(path, text, read_file)
+    ev = Evaluator(path, text, read_file, distro)
     convert_values.set_recorder(ev)
     spans = ev.main.spans
     result: Any = None

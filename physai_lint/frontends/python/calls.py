@@ -15,12 +15,16 @@ import yaml
 from physai_lint.model.span import Span
 from physai_lint.model.values import FindPackage, LaunchConfig, Text
 
-from . import api, bounds, builtin_calls, symbolic
+from . import api, bounds, builtin_calls, classes, symbolic
 from .convert_values import to_value
 from .runtime import (
     BoundMethod,
+    BoundUser,
+    ClassValue,
     ContextSym,
+    Decorator,
     FileHandle,
+    Instance,
     KPath,
     LaunchConfigsSym,
     LObj,
@@ -39,7 +43,7 @@ _STR_METHODS = frozenset(
 _LIST_METHODS = frozenset(["append", "extend", "insert", "pop", "index", "count", "copy", "remove", "reverse", "clear"])
 _GROWING = frozenset(["append", "extend", "insert", "update", "setdefault"])
 _DICT_METHODS = frozenset(["items", "keys", "values", "get", "update", "copy", "pop", "setdefault"])
-_KNOWN_MODULES = frozenset(["os", "os.path", "sys", "json", "yaml", "pathlib", "math", "re", "typing", "functools", "itertools", "ament_index_python", "tempfile", "xacro", "subprocess", "shutil", "glob", "collections", "launch_ros", "launch", "launch_xml", "launch_yaml", "ament_index_python.packages"])
+_KNOWN_MODULES = frozenset(["os", "os.path", "sys", "json", "yaml", "pathlib", "math", "re", "typing", "functools", "itertools", "ament_index_python", "tempfile", "xacro", "subprocess", "shutil", "glob", "collections", "dataclasses", "launch_ros", "launch", "launch_xml", "launch_yaml", "ament_index_python.packages"])
 
 
 def iterate(ev: Evaluator, v: Any) -> list[Any] | None:
@@ -63,6 +67,8 @@ def get_attr(ev: Evaluator, obj: Any, attr: str, span: Span) -> Any:
         return Ref(f"{obj.qual}.{attr}")
     if isinstance(obj, ModuleValue):
         return obj.globals.get(attr, Opaque(f'"{attr}" not found in module "{obj.name}"', span))
+    if isinstance(obj, (ClassValue, Instance)):
+        return classes.get_attr(ev, obj, attr, span)
     if isinstance(obj, ContextSym) and attr == "launch_configurations":
         return LaunchConfigsSym()
     if isinstance(obj, KPath):
@@ -76,7 +82,18 @@ def get_attr(ev: Evaluator, obj: Any, attr: str, span: Span) -> Any:
     return Opaque(f'attribute "{attr}" cannot be evaluated statically', span)
 
 
+def env_read(ev: Evaluator, name: Any, span: Span) -> Any:
+    """An environment variable read at description time: ``ROS_DISTRO`` is the ``--distro`` being
+    checked (the distro sourced before ``ros2 launch``); every other variable is unknown."""
+    if isinstance(name, str) and name in ev.env:
+        return ev.env[name]
+    shown = f' "{name}"' if isinstance(name, str) else ""
+    return Opaque(f"depends on the environment variable{shown}", span)
+
+
 def subscript(ev: Evaluator, obj: Any, key: Any, span: Span) -> Any:
+    if isinstance(obj, Ref) and obj.qual == "os.environ":
+        return env_read(ev, key, span)
     if isinstance(obj, LaunchConfigsSym) and isinstance(key, str):
         return SymStr((LaunchConfig((Text(str(key), span),), None, span),))
     if isinstance(obj, (dict, list, tuple, str)) and not isinstance(key, Opaque):
@@ -145,6 +162,12 @@ def call(ev: Evaluator, func: Any, args: list[Any], kwargs: dict[str, Any], node
         return call_ref(ev, qual or func.qual, args, kwargs, span)
     if isinstance(func, BoundMethod):
         return call_method(ev, func.obj, func.name, args, kwargs, span)
+    if isinstance(func, BoundUser):
+        return call_user(ev, func.func, [func.obj, *args], kwargs, span)
+    if isinstance(func, ClassValue):
+        return classes.instantiate(ev, func, args, kwargs, span)
+    if isinstance(func, Decorator) and func.kind == "cache" and len(args) == 1 and isinstance(args[0], UserFunc):
+        return classes.cached(args[0], func.maxsize)
     if isinstance(func, Opaque):
         return Opaque(func.reason, span)
     return Opaque("call of a value that cannot be evaluated statically", span)
@@ -155,6 +178,8 @@ def call_user(ev: Evaluator, f: UserFunc, args: list[Any], kwargs: dict[str, Any
 
     if ev.depth >= MAX_DEPTH:
         return Opaque("call depth limit reached (recursive helper?)", span)
+    if f.memo is not None:
+        return _call_cached(ev, f, args, kwargs, span)
     a = f.node.args
     fscope = Scope(f.closure, f.module)
     positional = [p.arg for p in a.posonlyargs + a.args]
@@ -187,9 +212,37 @@ def call_user(ev: Evaluator, f: UserFunc, args: list[Any], kwargs: dict[str, Any
         ev.depth -= 1
 
 
+def _call_cached(ev: Evaluator, f: UserFunc, args: list[Any], kwargs: dict[str, Any], span: Span) -> Any:
+    """A ``functools.cache``/``lru_cache`` function: the same object for the same arguments, as Python
+    gives (a cached Node added twice is one action). Unknown arguments are not cached."""
+    from .evaluator import is_concrete
+
+    plain = UserFunc(f.node, f.closure, f.module, f.defaults, f.kw_defaults)
+    memo = f.memo
+    assert memo is not None
+    try:
+        key = classes.memo_key(args, kwargs)
+    except TypeError:
+        return Opaque("lru_cache of an unhashable argument", span)
+    if not all(is_concrete(a) or isinstance(a, LObj) for a in [*args, *kwargs.values()]):
+        return call_user(ev, plain, args, kwargs, span)
+    if key in memo:
+        memo[key] = memo.pop(key)  # most recently used
+        return memo[key]
+    result = call_user(ev, plain, args, dict(kwargs), span)
+    if f.memo_size != 0:
+        memo[key] = result
+        if f.memo_size is not None and len(memo) > f.memo_size:
+            del memo[next(iter(memo))]
+    return result
+
+
 def call_ref(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any], span: Span) -> Any:
     if qual.startswith("builtins."):
         return builtin_calls.call_builtin(ev, qual[9:], args, kwargs, span)
+    known = classes.decorator_call(qual, args, kwargs, span)
+    if known is not None:
+        return known
     if qual in ("ament_index_python.packages.get_package_share_directory", "ament_index_python.packages.get_package_prefix"):
         pkg = args[0] if args else kwargs.get("package_name")
         kind = "share" if qual.endswith("share_directory") else "prefix"
@@ -213,7 +266,9 @@ def call_ref(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any], 
         return Opaque("Path of a value that cannot be evaluated statically", span)
     if qual in ("yaml.safe_load", "yaml.load", "yaml.full_load", "json.load", "json.loads"):
         return load_data(ev, qual, args[0] if args else kwargs.get("stream"), span)
-    if qual.startswith("os.environ") or qual in ("os.getenv", "os.getcwd"):
+    if qual in ("os.getenv", "os.environ.get"):
+        return env_read(ev, args[0] if args else kwargs.get("key"), span)
+    if qual.startswith("os.environ") or qual == "os.getcwd":
         return Opaque("depends on the environment", span)
     return Opaque(f'call of "{qual}" cannot be evaluated statically', span)
 

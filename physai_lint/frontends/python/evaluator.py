@@ -14,7 +14,7 @@ from physai_lint.model.launch import Condition
 from physai_lint.model.span import Span
 from physai_lint.model.values import Unknown as UnknownValue
 
-from . import bounds, calls, symbolic
+from . import bounds, calls, classes, matching, symbolic
 from .core import (
     BUILTIN_NAMES,
     MAX_DEPTH,
@@ -40,9 +40,12 @@ __all__ = ["BUILTIN_NAMES", "MAX_DEPTH", "Abort", "Evaluator", "ModuleCtx", "Sco
 
 
 class Evaluator(ExpressionsMixin, symbolic.Recorder):
-    def __init__(self, path: str, text: str, read_file: Callable[[str], str | None] | None) -> None:
+    def __init__(self, path: str, text: str, read_file: Callable[[str], str | None] | None,
+                 distro: str | None = None) -> None:
         super().__init__()
         self.path = path
+        # The only environment the file may see: the distro it is checked against.
+        self.env: dict[str, str] = {"ROS_DISTRO": distro} if distro else {}
         self.read_file = read_file
         self.main = ModuleCtx(path, SpanMaker(path, text), "")
         self.steps = 0
@@ -84,7 +87,7 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
             self.assign(s.target, self.ev(s.value, scope), scope)
 
     def st_AugAssign(self, s: ast.AugAssign, scope: Scope) -> None:
-        cur = self.ev(s.target, scope) if not isinstance(s.target, ast.Attribute) else Opaque("attribute")
+        cur = self.ev(s.target, scope)
         rhs = self.ev(s.value, scope)
         if isinstance(s.op, ast.Add) and isinstance(cur, list) and isinstance(rhs, (list, tuple)) \
                 and len(cur) + self.bounds.weight(rhs) <= bounds.MAX_WEIGHT:
@@ -121,9 +124,14 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
                     pass
         elif isinstance(t, ast.Starred):
             self.assign(t.value, value, scope)
+        elif isinstance(t, ast.Attribute):
+            classes.set_attr(self.ev(t.value, scope), t.attr, value)
 
     def st_FunctionDef(self, s: ast.FunctionDef, scope: Scope) -> None:
-        scope.set(s.name, self.make_func(s, scope))
+        value: Any = self.make_func(s, scope)
+        for dec in reversed(s.decorator_list):
+            value = classes.decorate(self, dec, value, scope, self.span(s, scope))
+        scope.set(s.name, value)
 
     st_AsyncFunctionDef = st_FunctionDef
 
@@ -131,10 +139,11 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
         a = s.args
         defaults = [self.ev(d, scope) for d in a.defaults]
         kw_defaults = {arg.arg: self.ev(d, scope) for arg, d in zip(a.kwonlyargs, a.kw_defaults) if d is not None}
-        return UserFunc(s, scope, scope.module, defaults, kw_defaults)
+        closure = scope.outer if isinstance(scope, classes.ClassScope) else scope
+        return UserFunc(s, closure, scope.module, defaults, kw_defaults)
 
     def st_ClassDef(self, s: ast.ClassDef, scope: Scope) -> None:
-        scope.set(s.name, Opaque(f'class "{s.name}" is not evaluated', self.span(s, scope)))
+        scope.set(s.name, classes.define_class(self, s, scope))
 
     def st_Return(self, s: ast.Return, scope: Scope) -> None:
         raise Return(self.ev(s.value, scope) if s.value is not None else None)
@@ -227,6 +236,16 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
             except Continue:
                 continue
         raise Abort("loop iteration limit exceeded")
+
+    def st_Match(self, s: ast.Match, scope: Scope) -> None:
+        matching.run_cases(self, self.ev(s.subject, scope), s.cases, scope)
+
+    def st_MatchRest(self, s: matching.MatchRest, scope: Scope) -> None:
+        matching.run_cases(self, s.subject, s.cases, scope)
+
+    def st_Bind(self, s: matching.Bind, scope: Scope) -> None:
+        for name, value in s.names.items():
+            scope.set(name, value)
 
     def st_With(self, s: ast.With, scope: Scope) -> None:
         for item in s.items:

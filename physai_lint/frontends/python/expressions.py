@@ -17,6 +17,7 @@ from .runtime import LObj, Opaque, Ref, SStr, SymBool
 
 class ExpressionsMixin:
     bounds: SizeGuard
+    env: dict[str, str]
 
     # ---- expressions ----------------------------------------------------------------------
     def ev(self, node: ast.expr, scope: Scope) -> Any:
@@ -146,6 +147,9 @@ class ExpressionsMixin:
         for op, comp in zip(n.ops, n.comparators):
             right = self.ev(comp, scope)
             r = symbolic.compare(op, left, right, self.span(n, scope))
+            if r is None and isinstance(right, Ref) and right.qual == "os.environ" and isinstance(op, (ast.In, ast.NotIn)):
+                known = isinstance(left, str) and left in self.env
+                r = (isinstance(op, ast.In)) if known else Opaque("depends on the environment", self.span(n, scope))
             if r is None:
                 if isinstance(op, (ast.Is, ast.IsNot)) and not isinstance(left, Opaque) and not isinstance(right, Opaque):
                     r = CMPOPS[type(op)](left, right)
@@ -155,7 +159,9 @@ class ExpressionsMixin:
                     except Exception:  # noqa: BLE001
                         r = Opaque("comparison fails")
                 else:
-                    r = Opaque("comparison of values that cannot be evaluated statically", self.span(n, scope))
+                    unknown = left if isinstance(left, Opaque) else right
+                    reason = unknown.reason if isinstance(unknown, Opaque) else "comparison of values that cannot be evaluated statically"
+                    r = Opaque(reason, self.span(n, scope))
             if len(n.ops) == 1:
                 return r
             if r is not True:

@@ -104,6 +104,8 @@ class UserFunc:
     module: Any  # ModuleCtx
     defaults: list[Any] = field(default_factory=list)
     kw_defaults: dict[str, Any] = field(default_factory=dict)
+    memo: dict[Any, Any] | None = None  # functools.cache / lru_cache results by argument key
+    memo_size: int | None = None  # lru_cache(maxsize=N); None is unbounded
 
 
 @dataclass(eq=False)
@@ -158,4 +160,57 @@ def is_action(v: Any) -> bool:
 def type_name(v: Any) -> str:
     if isinstance(v, LObj):
         return v.qual.rsplit(".", 1)[-1]
+    if isinstance(v, Instance):
+        return f"{v.cls.name} object"
     return type(v).__name__
+
+
+@dataclass(eq=False)
+class ClassValue:
+    """A class defined in the launch file that stays simple enough to evaluate (``classes.py``)."""
+
+    name: str
+    attrs: dict[str, Any]
+    base: ClassValue | None = None
+    fields: tuple[str, ...] | None = None  # dataclass fields in order; None for a plain class
+    frozen: bool = False
+    defaults: dict[str, FieldSpec] = field(default_factory=dict)  # dataclass field defaults
+
+
+@dataclass(eq=False)
+class Instance:
+    cls: ClassValue
+    attrs: dict[str, Any] = field(default_factory=dict)
+
+
+@dataclass(eq=False)
+class BoundUser:
+    """A method of a user class bound to its instance (or a classmethod to its class)."""
+
+    func: UserFunc
+    obj: Any
+
+
+@dataclass(eq=False)
+class MethodKind:
+    """``staticmethod``/``classmethod``/``property`` around a function in a class body."""
+
+    kind: str
+    func: Any
+
+
+@dataclass(eq=False)
+class Decorator:
+    """A known decorator value: ``functools.lru_cache(maxsize=...)`` or ``dataclass(...)``."""
+
+    kind: str
+    maxsize: int | None = None
+    options: dict[str, Any] = field(default_factory=dict)
+
+
+@dataclass(eq=False)
+class FieldSpec:
+    """``dataclasses.field(default=..., default_factory=...)``."""
+
+    default: Any
+    factory: Any

@@ -153,6 +153,10 @@ def format_value(rec: Recorder, x: Any, conversion: int, spec: Any, span: Span) 
         return x
     if isinstance(x, KPath):
         return x.path
+    from .core import is_concrete
+
+    if not is_concrete(x):
+        return Opaque("f-string of a value that cannot be evaluated statically", span)
     if not isinstance(spec, str):
         return Opaque("f-string with an unknown format spec", span)
     if bounds.wide_format(spec):

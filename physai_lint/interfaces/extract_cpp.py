@@ -11,9 +11,10 @@ from string literals or constants defined in the same file.
 """
 from __future__ import annotations
 
+import dataclasses
 import functools
 import re
-from typing import NamedTuple
+from typing import Any, NamedTuple
 
 from physai_lint.model.span import Span
 
@@ -384,10 +385,13 @@ def extract_cpp(files: list[tuple[str, str]]) -> NodeInterface:
                           action_servers=[], action_clients=[], parameters={},
                           parameters_complete=False, source="extracted from C++ sources")
     for path, text in files:
-        try:
-            _extract_one(path, text, iface)
-        except (RecursionError, IndexError, ValueError):
-            continue
+        for kind, obj, read_only in _file_events(path, text):
+            if kind != "param":
+                getattr(iface, kind).append(obj)
+                continue
+            decl = iface.parameters.setdefault(obj.name, dataclasses.replace(obj))  # type: ignore[union-attr]
+            if read_only:
+                decl.read_only = True
     return iface
 
 
@@ -432,6 +436,46 @@ def _tokens(text: str) -> list[Tok]:
 # (two thirds of the C++ files of a workspace), and tokenizing it is most of the cost.
 _CALL_WORDS = re.compile(r"create_(?:publisher|subscription|service|client|server)|advertise|subscribe"
                          r"|declare_(?:parameter|or_get_parameter)")
+
+
+class _Found:
+    """What one file contributes, in source order: endpoints by kind, and parameter declarations
+    with whether that declaration makes the parameter read-only."""
+
+    def __init__(self) -> None:
+        self.events: list[tuple[str, Any, bool]] = []
+        self.parameters = self
+
+    def __getattr__(self, kind: str) -> Any:  # iface.publishers.append(...) and the like
+        if kind.startswith("__"):
+            raise AttributeError(kind)
+        return _Appender(self.events, kind)
+
+    def setdefault(self, name: str, decl: ParamDecl) -> ParamDecl:  # iface.parameters.setdefault
+        self.events.append(("param", decl, False))
+        return decl
+
+
+class _Appender:
+    def __init__(self, events: list[tuple[str, Any, bool]], kind: str) -> None:
+        self.events, self.kind = events, kind
+
+    def append(self, endpoint: Endpoint) -> None:
+        self.events.append((self.kind, endpoint, False))
+
+
+@functools.lru_cache(maxsize=1024)
+def _file_events(path: str, text: str) -> tuple[tuple[str, Any, bool], ...]:
+    """``_extract_one``'s findings for one file, once per file: a package's executables share
+    sources (2,195 extractions of 601 files on the real-world corpus)."""
+    found = _Found()
+    try:
+        _extract_one(path, text, found)  # type: ignore[arg-type]
+    except (RecursionError, IndexError, ValueError):
+        return ()
+    # A declaration made read-only after it was recorded: ParamDecl.read_only was set on it.
+    return tuple((kind, dataclasses.replace(obj, read_only=False) if kind == "param" else obj,
+                  kind == "param" and obj.read_only) for kind, obj, _ in found.events)
 
 
 def _extract_one(path: str, text: str, iface: NodeInterface) -> None:

@@ -41,6 +41,9 @@ _NUM = re.compile(r"(?:0[xX][0-9a-fA-F']+|[0-9][0-9']*\.?[0-9']*(?:[eE][+-]?[0-9
 _STR_PREFIX = ("u8R", "uR", "UR", "LR", "R", "u8", "u", "U", "L")
 
 
+_new = tuple.__new__  # Tok(...) without NamedTuple's Python-level __new__: a third of tokenizing
+
+
 def tokenize(text: str) -> list[Tok]:
     toks: list[Tok] = []
     i, n = 0, min(len(text), MAX_SOURCE)
@@ -88,10 +91,10 @@ def tokenize(text: str) -> list[Tok]:
             m = re.match(r'#\s*define\s+([A-Za-z_]\w*)\s+"((?:[^"\\]|\\.)*)"\s*$', directive)
             if m:
                 sl, sc = pos(i)
-                toks.append(Tok("op", "#define", sl, sc, sl, sc + 1))
-                toks.append(Tok("id", m.group(1), sl, sc, sl, sc + 1))
-                toks.append(Tok("str", _unescape(m.group(2)), sl, sc, sl, sc + 1))
-                toks.append(Tok("op", ";", sl, sc, sl, sc + 1))
+                toks.append(_new(Tok, ("op", "#define", sl, sc, sl, sc + 1)))
+                toks.append(_new(Tok, ("id", m.group(1), sl, sc, sl, sc + 1)))
+                toks.append(_new(Tok, ("str", _unescape(m.group(2)), sl, sc, sl, sc + 1)))
+                toks.append(_new(Tok, ("op", ";", sl, sc, sl, sc + 1)))
             line += text.count("\n", i, k)
             kk = text.rfind("\n", i, k)
             if kk >= 0:
@@ -141,9 +144,9 @@ def tokenize(text: str) -> list[Tok]:
             # adjacent literals concatenate
             if toks and toks[-1].kind == "str" and toks[-1].end_line > 0:
                 prev = toks.pop()
-                toks.append(Tok("str", prev.text + body, prev.line, prev.col, el, ec))
+                toks.append(_new(Tok, ("str", prev.text + body, prev.line, prev.col, el, ec)))
             else:
-                toks.append(Tok("str", body, sl, sc, el, ec))
+                toks.append(_new(Tok, ("str", body, sl, sc, el, ec)))
             i = end
             continue
         if c == "'":
@@ -151,30 +154,30 @@ def tokenize(text: str) -> list[Tok]:
             while j < n and text[j] != "'" and text[j] != "\n":
                 j += 2 if text[j] == "\\" else 1
             sl, sc = pos(i)
-            toks.append(Tok("char", text[i + 1:j], sl, sc, sl, sc + (j - i + 1)))
+            toks.append(_new(Tok, ("char", text[i + 1:j], sl, sc, sl, sc + (j - i + 1))))
             i = j + 1
             continue
         if is_id:
             m = _ID.match(text, i + 1)
             j = m.end() if m else i + 1
             sl, sc = pos(i)
-            toks.append(Tok("id", text[i:j], sl, sc, sl, sc + (j - i)))
+            toks.append(_new(Tok, ("id", text[i:j], sl, sc, sl, sc + (j - i))))
             i = j
             continue
         if c.isdigit() or (c == "." and i + 1 < n and text[i + 1].isdigit()):
             m = _NUM.match(text, i)
             j = m.end() if m and m.end() > i else i + 1
             sl, sc = pos(i)
-            toks.append(Tok("num", text[i:j], sl, sc, sl, sc + (j - i)))
+            toks.append(_new(Tok, ("num", text[i:j], sl, sc, sl, sc + (j - i))))
             i = j
             continue
         two = text[i:i + 2]
         sl, sc = pos(i)
         if two in ("::", "->"):
-            toks.append(Tok("op", two, sl, sc, sl, sc + 2))
+            toks.append(_new(Tok, ("op", two, sl, sc, sl, sc + 2)))
             i += 2
             continue
-        toks.append(Tok("op", c, sl, sc, sl, sc + 1))
+        toks.append(_new(Tok, ("op", c, sl, sc, sl, sc + 1)))
         i += 1
     return toks
 

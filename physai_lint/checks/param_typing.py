@@ -146,11 +146,13 @@ def _decimal_hint(text: str) -> str:
 @rule("P112", "ambiguous-parameter-typing")
 def ambiguous_typing(ctx: CheckContext) -> Iterator[Diagnostic]:
     seen: set[object] = set()
-    file_written = _file_written(ctx)
+    file_written: dict[Span, tuple[str, bool, str]] | None = None
     for _, node in nodes_with_params(ctx):
         params = effective(ctx, node)
         if not params:
             continue
+        if file_written is None:  # only runs that launch a node with parameters need it
+            file_written = _file_written(ctx)
         written = _written(node)
         iface = interface(ctx, node)
         decls = (iface.parameters or {}) if iface is not None else {}

@@ -664,9 +664,9 @@ def _remap(obj: Any, fn: Callable[[Span], Span], memo: dict[int, Any]) -> Any:
         return memo[id(obj)]
     out: Any = obj
     if isinstance(obj, tuple):
-        out = tuple(_remap(x, fn, memo) for x in obj)
+        out = tuple(x if type(x) in _ATOMS else _remap(x, fn, memo) for x in obj)
     elif isinstance(obj, list):
-        out = [_remap(x, fn, memo) for x in obj]
+        out = [x if type(x) in _ATOMS else _remap(x, fn, memo) for x in obj]
     elif dataclasses.is_dataclass(obj) and not isinstance(obj, type):
         names = _FIELD_NAMES.get(kind)
         if names is None:
@@ -674,6 +674,8 @@ def _remap(obj: Any, fn: Callable[[Span], Span], memo: dict[int, Any]) -> Any:
         changes = {}
         for name in names:
             old = getattr(obj, name)
+            if type(old) in _ATOMS:
+                continue
             new = _remap(old, fn, memo)
             if new is not old:
                 changes[name] = new

@@ -8,6 +8,7 @@ arbitrary objects, calls of unknown functions, comprehensions, lambdas ...) give
 from __future__ import annotations
 
 import ast
+import functools
 import math
 import operator
 import re
@@ -288,14 +289,23 @@ def _safe_format(template: str) -> Callable[..., str]:
     return fmt
 
 
+@functools.lru_cache(maxsize=2048)
+def _parse(expr: str) -> ast.Expression | str:
+    """The expression's tree (only read by ``_Interp``), or why it does not parse; once per text:
+    the same conditions are evaluated in every entry that includes their file."""
+    try:
+        return ast.parse(expr, mode="eval")
+    except (SyntaxError, ValueError, MemoryError, RecursionError) as err:
+        return str(err)
+
+
 def safe_eval(expr: str, modules: tuple[str, ...] = ("math",)) -> object | SafeEvalUnknown:
     """Evaluate ``expr`` like ``PythonExpression`` would, or say why it cannot be known."""
     if len(expr) > MAX_EXPR_CHARS:
         return SafeEvalUnknown("expression too long")
-    try:
-        tree = ast.parse(expr.strip(), mode="eval")
-    except (SyntaxError, ValueError, MemoryError, RecursionError) as err:
-        return SafeEvalUnknown(f"not a Python expression: {err}")
+    tree = _parse(expr.strip())
+    if isinstance(tree, str):
+        return SafeEvalUnknown(f"not a Python expression: {tree}")
     try:
         return _Interp(modules).run(tree)
     except _Unknown as err:

@@ -10,9 +10,11 @@ from typing import Any
 from physai_lint.model.span import Span
 
 from . import calls, symbolic
-from .bounds import SizeGuard
+from .bounds import MAX_WEIGHT, SizeGuard
 from .core import BINOPS, BUILTIN_NAMES, CMPOPS, MAX_LOOP, Abort, Scope, is_concrete, truth
 from .runtime import LObj, Opaque, Ref, SStr, SymBool
+
+_SCALARS = frozenset([int, float, bool, type(None), Opaque])
 
 
 class ExpressionsMixin:
@@ -27,7 +29,10 @@ class ExpressionsMixin:
             return Opaque(f"unsupported expression ({type(node).__name__})", self.span(node, scope))
         result = handler(node, scope)
         # A name gives back a value weighed when it was built (in-place growth is checked in calls).
-        if not isinstance(node, ast.Name) and self.bounds.too_big(result):
+        kind = type(result)
+        if kind in _SCALARS or isinstance(node, ast.Name):
+            return result
+        if (len(result) >= MAX_WEIGHT if kind is str or kind is SStr else self.bounds.too_big(result)):
             return Opaque("value too large to analyse", self.span(node, scope))
         return result
 

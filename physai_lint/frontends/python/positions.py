@@ -15,6 +15,8 @@ class SpanMaker:
         self.path = path
         self._lines = text.splitlines()
         self._ascii = [line.isascii() for line in self._lines]
+        # Helpers and loop bodies evaluate the same nodes many times: one Span per node.
+        self._spans: dict[int, tuple[ast.AST, Span]] = {}
 
     def _col(self, line: int, byte_col: int) -> int:
         idx = line - 1
@@ -24,6 +26,14 @@ class SpanMaker:
         return byte_col + 1
 
     def of(self, node: ast.AST) -> Span:
+        hit = self._spans.get(id(node))
+        if hit is not None and hit[0] is node:
+            return hit[1]
+        span = self._make(node)
+        self._spans[id(node)] = (node, span)
+        return span
+
+    def _make(self, node: ast.AST) -> Span:
         line = getattr(node, "lineno", 1)
         col = getattr(node, "col_offset", 0)
         end_line = getattr(node, "end_lineno", None) or line

@@ -99,11 +99,13 @@ class _Reader:
                 el.attrs[name] = Attr(name, value, el.span, el.span)
                 continue
             name_off, value_off, raw = found
-            norm, offs = _normalise(raw, value_off)
             end = value_off + len(raw)
             # A verbatim value (the usual case) needs no table: its characters follow its start.
-            positions = None if norm != value or raw == value else \
-                [self.lines.lc(o) for o in offs] + [self.lines.lc(end)]
+            positions = None
+            if raw != value:
+                norm, offs = _normalise(raw, value_off)
+                if norm == value:
+                    positions = [self.lines.lc(o) for o in offs] + [self.lines.lc(end)]
             el.attrs[name] = Attr(name, value, self.lines.span(name_off, name_off + len(name)),
                                   self.lines.span(value_off, end), positions)
         if self.stack:

@@ -128,8 +128,10 @@ def parse_substitutions(
     seg = 0
     n = len(text)
     while i < n:
-        ch = text[i]
-        if ch == "$" and not (i > 0 and text[i - 1] == "\\") and not text.startswith("$!(", i):
+        i = text.find("$", i)
+        if i < 0:
+            break
+        if not (i > 0 and text[i - 1] == "\\") and not text.startswith("$!(", i):
             if i > seg:
                 parts.append(_text(ctx, seg, i))
             if text.startswith("$(", i):

@@ -258,3 +258,28 @@ def test_classes_that_could_hide_behaviour_stay_unknown():
     assert isinstance(node.name[0], V.Unknown) and '"__eq__"' in node.name[0].reason
     assert isinstance(derived, L.OpaqueAction) and "derives from a class" in derived.reason
     assert isinstance(frozen.name[0], V.Unknown)
+
+
+def test_nonlocal_counter_and_failing_assert():
+    acts = actions("""
+        from launch_ros.actions import Node
+
+        def make_counter():
+            count = 0
+            def next_name(prefix):
+                nonlocal count
+                count += 1
+                return f'{prefix}{count}'
+            return next_name
+
+        def checked(x):
+            assert x > 0, 'x must be positive'
+            return Node(package='c', executable=f'ok{x}')
+
+        def generate_launch_description():
+            name = make_counter()
+            return [Node(package='p', executable=name('n')), Node(package='p', executable=name('n')),
+                    checked(1), checked(-1)]
+    """)
+    assert executables(acts[:3]) == ["n1", "n2", "ok1"]
+    assert isinstance(acts[3], L.OpaqueAction) and "raises" in acts[3].reason

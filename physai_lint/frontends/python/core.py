@@ -47,19 +47,27 @@ class Raise(Signal):
 
 
 class Scope:
-    __slots__ = ("globals_decl", "module", "parent", "vars")
+    __slots__ = ("globals_decl", "module", "nonlocal_decl", "parent", "vars")
 
     def __init__(self, parent: Scope | None, module: ModuleCtx | None) -> None:
         self.vars: dict[str, Any] = {}
         self.parent = parent
         self.module = module
         self.globals_decl: set[str] = set()
+        self.nonlocal_decl: set[str] = set()
 
     def set(self, name: str, value: Any) -> None:
         if name in self.globals_decl and self.module is not None:
             self.module.scope.vars[name] = value
-        else:
-            self.vars[name] = value
+            return
+        if name in self.nonlocal_decl:
+            s = self.parent
+            while s is not None and s.parent is not None:  # the module scope is not a nonlocal target
+                if name in s.vars:
+                    s.vars[name] = value
+                    return
+                s = s.parent
+        self.vars[name] = value
 
 
 class ModuleCtx:

@@ -163,6 +163,13 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
     def st_Global(self, s: ast.Global, scope: Scope) -> None:
         scope.globals_decl.update(s.names)
 
+    def st_Nonlocal(self, s: ast.Nonlocal, scope: Scope) -> None:
+        scope.nonlocal_decl.update(s.names)
+
+    def st_Assert(self, s: ast.Assert, scope: Scope) -> None:
+        if truth(self.ev(s.test, scope)) is False:
+            raise Raise()  # AssertionError; an unknown test may pass
+
     def st_Delete(self, s: ast.Delete, scope: Scope) -> None:
         for t in s.targets:
             if isinstance(t, ast.Name):
@@ -264,6 +271,8 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
             self.exec_block(s.orelse, scope)
         finally:
             self.exec_block(s.finalbody, scope)
+
+    st_TryStar = st_Try
 
     # ---- branches over values only known at launch time -------------------------------------
     def branch_both(self, test: Any, body: list[ast.stmt], orelse: list[ast.stmt], node: ast.AST,

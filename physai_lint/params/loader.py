@@ -355,7 +355,7 @@ class _DupTracker:
 
     def node(self, ev: Any, is_scalar: bool, span: Span | None = None) -> None:
         if self.pending is not None:
-            key, span, first = self.pending
+            key, dup_span, first = self.pending
             self.pending = None
             if isinstance(ev, yaml.MappingStartEvent):
                 what = ("rcl merges both mappings, but other YAML readers (PyYAML: launch_ros for "
@@ -363,7 +363,7 @@ class _DupTracker:
             else:
                 what = "rcl keeps the first position and overwrites its value"
             self.model.diagnostics.append(Diagnostic(
-                "X006", span, f"duplicate key \"{key}\" (first at line {first.line}); {what}",
+                "X006", dup_span, f"duplicate key \"{key}\" (first at line {first.line}); {what}",
                 "remove one of them, or merge their contents under one key", key=key))
         if self.stack and self.stack[-1][0] == "map":
             frame = self.stack[-1]
@@ -371,7 +371,8 @@ class _DupTracker:
                 frame[1] = False
                 if is_scalar:
                     key = ev.value
-                    span = span or _span(self.path, ev)
+                    if span is None:
+                        span = _span(self.path, ev)
                     if key.startswith(PARAMS_KEY):
                         self.model.has_ros_parameters = True
                     first = frame[2].get(key)

@@ -283,3 +283,18 @@ def test_nonlocal_counter_and_failing_assert():
     """)
     assert executables(acts[:3]) == ["n1", "n2", "ok1"]
     assert isinstance(acts[3], L.OpaqueAction) and "raises" in acts[3].reason
+
+
+def test_test_markers_give_back_the_function():
+    acts = actions("""
+        import launch_testing.markers
+        import pytest
+        from launch_ros.actions import Node
+
+        @pytest.mark.launch_test
+        @pytest.mark.parametrize('x', [1])
+        @launch_testing.markers.keep_alive
+        def generate_launch_description():
+            return [Node(package='p', executable='e')]
+    """)
+    assert executables(acts) == ["e"]

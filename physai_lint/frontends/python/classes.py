@@ -36,6 +36,7 @@ LRU_DEFAULT = 128
 _SIMPLE_DUNDERS = frozenset(["__init__", "__post_init__", "__repr__", "__str__", "__doc__", "__module__",
                              "__qualname__"])
 _DATACLASS_OPTIONS = frozenset(["frozen", "eq", "order", "repr", "unsafe_hash", "match_args"])
+_MARKERS = frozenset(["launch_testing.markers.keep_alive"])
 _METHOD_KINDS = {"builtins.staticmethod": "static", "builtins.classmethod": "class", "builtins.property": "property"}
 
 
@@ -82,7 +83,11 @@ def decorate(ev: Evaluator, dec: ast.expr, value: Any, scope: Scope, span: Span)
     """Apply one function decorator the way Python would, or make the function unknown."""
     from .calls import call_user
 
-    d = ev.ev(dec, scope)
+    target = dec.func if isinstance(dec, ast.Call) else dec
+    marker = ev.ev(target, scope)
+    if isinstance(marker, Ref) and (marker.qual.startswith("pytest.mark.") or marker.qual in _MARKERS):
+        return value  # pytest marks and launch_testing's keep_alive give back the function itself
+    d = ev.ev(dec, scope) if target is not dec else marker
     if isinstance(value, Opaque):
         return value
     name = ast.unparse(dec) if len(ast.unparse(dec)) < 60 else "..."

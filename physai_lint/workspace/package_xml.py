@@ -101,7 +101,10 @@ def _parse_manifest(text: str, filename: str, distro: str) -> ManifestInfo:
     except Exception:  # noqa: BLE001, S110 - an unparsable condition keeps the dependency
         pass
     deps: dict[str, int] = {}
-    for dep in list(pkg.exec_depends) + list(getattr(pkg, "run_depends", [])):
+    # catkin_pkg's run_depends is computed on every access as deep copies of exec_depends +
+    # build_export_depends (format 1 <run_depend> fills both): read those directly, same names
+    # and conditions without the copies.
+    for dep in list(pkg.exec_depends) + list(pkg.build_export_depends):
         cond = getattr(dep, "evaluated_condition", None)
         if cond is False:
             continue

@@ -298,3 +298,37 @@ def test_test_markers_give_back_the_function():
             return [Node(package='p', executable='e')]
     """)
     assert executables(acts) == ["e"]
+
+
+def test_subclass_calling_super_init():
+    acts = actions("""
+        from launch_ros.actions import Node
+
+        class Base:
+            def __init__(self, name):
+                self.name = name
+                self.params = {'rate': 10}
+
+            def node(self):
+                return Node(package='p', executable=self.name, parameters=[self.params])
+
+        class Fast(Base):
+            def __init__(self, name):
+                super().__init__(name + '_fast')
+                self.params['rate'] = 100
+
+            def node(self):
+                n = super().node()
+                return n
+
+        class Lone:
+            def label(self):
+                return super().label()
+
+        def generate_launch_description():
+            return [Fast('cam').node(), Base('slow').node(), Node(package='x', executable='x', name=Lone().label())]
+    """)
+    fast, _slow, lone = acts
+    assert executables(acts[:2]) == ["cam_fast", "slow"]
+    assert [(e.name, e.value.value) for e in fast.parameters[0].entries] == [("rate", 100)]
+    assert isinstance(lone.name[0], V.Unknown) and "super()" in lone.name[0].reason

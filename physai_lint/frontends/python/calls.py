@@ -31,6 +31,7 @@ from .runtime import (
     ModuleValue,
     Opaque,
     Ref,
+    SuperProxy,
     SymStr,
     UserFunc,
 )
@@ -67,7 +68,7 @@ def get_attr(ev: Evaluator, obj: Any, attr: str, span: Span) -> Any:
         return Ref(f"{obj.qual}.{attr}")
     if isinstance(obj, ModuleValue):
         return obj.globals.get(attr, Opaque(f'"{attr}" not found in module "{obj.name}"', span))
-    if isinstance(obj, (ClassValue, Instance)):
+    if isinstance(obj, (ClassValue, Instance, SuperProxy)):
         return classes.get_attr(ev, obj, attr, span)
     if isinstance(obj, ContextSym) and attr == "launch_configurations":
         return LaunchConfigsSym()
@@ -200,6 +201,7 @@ def call_user(ev: Evaluator, f: UserFunc, args: list[Any], kwargs: dict[str, Any
     if a.kwarg is not None:
         fscope.vars[a.kwarg.arg] = {k: v for k, v in kwargs.items() if k not in positional}
     ev.depth += 1
+    ev.frames.append((f, fscope))
     try:
         if isinstance(f.node, ast.Lambda):
             return ev.ev(f.node.body, fscope)
@@ -209,6 +211,7 @@ def call_user(ev: Evaluator, f: UserFunc, args: list[Any], kwargs: dict[str, Any
     except RecursionError:
         return Opaque("too deeply nested to evaluate", span)
     finally:
+        ev.frames.pop()
         ev.depth -= 1
 
 

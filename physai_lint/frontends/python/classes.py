@@ -26,6 +26,7 @@ from .runtime import (
     MethodKind,
     Opaque,
     Ref,
+    SuperProxy,
     UserFunc,
 )
 
@@ -143,13 +144,18 @@ def define_class(ev: Evaluator, s: ast.ClassDef, scope: Scope) -> Any:
     cscope = ClassScope(scope)
     ev.exec_block(s.body, cscope)
     attrs = cscope.vars
+    cls = ClassValue(s.name, attrs, base)
+    for v in attrs.values():
+        func = v.func if isinstance(v, MethodKind) else v
+        if isinstance(func, UserFunc) and func.owner is None:
+            func.owner = cls
     odd = sorted(k for k in attrs if k.startswith("__") and k.endswith("__") and k not in _SIMPLE_DUNDERS)
     if odd:
         return refuse(f'it defines "{odd[0]}"')
     if base is not None and (base.fields is not None) != (data is not None):
         return refuse("it mixes dataclasses and plain classes")
     if data is None:
-        return ClassValue(s.name, attrs, base)
+        return cls
     fields = list(base.fields or ()) if base is not None else []
     for stmt in s.body:
         if isinstance(stmt, ast.AnnAssign) and isinstance(stmt.target, ast.Name):
@@ -175,7 +181,8 @@ def define_class(ev: Evaluator, s: ast.ClassDef, scope: Scope) -> Any:
         if seen_default and f not in defaults:
             return refuse(f'field "{f}" without a default follows a field with one')  # TypeError
         seen_default = seen_default or f in defaults
-    return ClassValue(s.name, attrs, base, tuple(fields), bool(data.options.get("frozen")), defaults)
+    cls.fields, cls.frozen, cls.defaults = tuple(fields), bool(data.options.get("frozen")), defaults
+    return cls
 
 
 def chain(cls: ClassValue | None) -> Iterator[ClassValue]:
@@ -246,12 +253,29 @@ def call_value(ev: Evaluator, func: Any, span: Span) -> Any:
     return Opaque("a default_factory that cannot be evaluated statically", span)
 
 
-def get_attr(ev: Evaluator, obj: ClassValue | Instance, attr: str, span: Span) -> Any:
+def zero_arg_super(ev: Evaluator, span: Span) -> Any:
+    """``super()`` in a method of a simple class with a simple base class."""
+    if not ev.frames:
+        return Opaque("super() outside a method", span)
+    f, fscope = ev.frames[-1]
+    owner = f.owner
+    params = f.node.args.posonlyargs + f.node.args.args
+    if not isinstance(owner, ClassValue) or owner.base is None or not params:
+        return Opaque("super() without a base class of this file", span)
+    return SuperProxy(owner.base, fscope.vars.get(params[0].arg))
+
+
+def get_attr(ev: Evaluator, obj: ClassValue | Instance | SuperProxy, attr: str, span: Span) -> Any:
     from .calls import call_user
 
     if isinstance(obj, Instance) and attr in obj.attrs:
         return obj.attrs[attr]
-    cls = obj.cls if isinstance(obj, Instance) else obj
+    if isinstance(obj, SuperProxy):
+        cls, obj = obj.start, obj.obj
+        if not isinstance(obj, (Instance, ClassValue)):
+            return Opaque("super() of a value that cannot be evaluated statically", span)
+    else:
+        cls = obj.cls if isinstance(obj, Instance) else obj
     v = lookup(cls, attr)
     if v is None and not any(attr in c.attrs for c in chain(cls)):
         return Opaque(f'"{cls.name}" has no attribute "{attr}" known statically', span)

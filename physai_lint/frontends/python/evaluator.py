@@ -55,6 +55,7 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
         self.pending: list[list[Any]] = []
         self.frame_tags: list[int] = []
         self.modules: dict[str, Any] = {}
+        self.frames: list[tuple[UserFunc, Scope]] = []  # user functions being called, innermost last
 
     # ---- bookkeeping ----------------------------------------------------------------------
     def tick(self) -> None:

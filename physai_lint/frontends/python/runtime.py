@@ -106,6 +106,7 @@ class UserFunc:
     kw_defaults: dict[str, Any] = field(default_factory=dict)
     memo: dict[Any, Any] | None = None  # functools.cache / lru_cache results by argument key
     memo_size: int | None = None  # lru_cache(maxsize=N); None is unbounded
+    owner: Any = None  # the ClassValue whose body defined it (for zero-argument super())
 
 
 @dataclass(eq=False)
@@ -188,6 +189,14 @@ class BoundUser:
     """A method of a user class bound to its instance (or a classmethod to its class)."""
 
     func: UserFunc
+    obj: Any
+
+
+@dataclass(eq=False)
+class SuperProxy:
+    """``super()`` inside a method: attribute lookup starts after the defining class."""
+
+    start: ClassValue
     obj: Any
 
 

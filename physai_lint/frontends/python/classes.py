@@ -2,8 +2,9 @@
 
 Launch files sometimes cache a helper (``@functools.lru_cache``/``@cache``), wrap it in their own
 decorator, or keep robot data in a small class or dataclass whose methods return actions. Those
-are evaluated like the rest of the file; anything whose behaviour a class could change behind our
-back (metaclasses, foreign bases, ``super()``, special methods other than ``__init__``/
+are evaluated like the rest of the file (single inheritance from another such class, with
+zero-argument ``super()``); anything whose behaviour a class could change behind our back
+(metaclasses, foreign or multiple bases, special methods other than ``__init__``/
 ``__post_init__``/``__repr__``/``__str__``, unknown decorators) makes the class or function
 ``Opaque`` with a reason, never a guess.
 """

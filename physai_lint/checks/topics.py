@@ -39,6 +39,17 @@ def identity_remap(ctx: CheckContext) -> Iterator[Diagnostic]:
 @rule("T102", "unused-remap")
 def unused_remap(ctx: CheckContext) -> Iterator[Diagnostic]:
     seen: set[object] = set()
+    # One remapping list written once and handed to several nodes (nav2's ('/tf', 'tf') list on
+    # every server) is meant for whichever of them uses each rule: a rule is unused only when no
+    # node it reaches uses it, or may use it (its interface unknown or not complete).
+    for g in graphs(ctx):
+        for node in g.launch.nodes:
+            if node.active is False:
+                continue
+            for i, r in enumerate(node.remaps):
+                if r.origin == "node" and (g.remap_used(node.id, i) or node.id not in g.known
+                                           or not _trusted(ctx, node)):
+                    seen.add(r.span)
     for g in graphs(ctx):
         for node in g.launch.nodes:
             if node.id not in g.known or node.active is False:
@@ -80,9 +91,15 @@ def unused_remap(ctx: CheckContext) -> Iterator[Diagnostic]:
 
 
 def _trusted(ctx: CheckContext, node: NodeInstance) -> bool:
-    """Bundled declarations may omit optional topics: only workspace/declared interfaces are complete."""
+    """Whether the node's topics are known to be all of them: only an ``--interfaces`` declaration
+    says so. Bundled declarations may omit optional topics, and sources miss what a base class or
+    a library member creates (a costmap's tf listener, autoware's polling subscribers, image
+    transport): on public repositories nearly every "matches no topic" from extracted C++ was one."""
     iface = ctx.interfaces.get(node.package, node.executable)
-    return iface is not None and not str(getattr(iface, "source", "")).startswith("bundled")
+    if iface is None:
+        return False
+    layers = str(getattr(iface, "source", "")).split(" + ")
+    return any(x and not x.startswith(("bundled", "extracted", "generate_parameter_library")) for x in layers)
 
 
 def wrong_side(g: SystemGraph, node: NodeInstance, index: int, trusted: bool) -> tuple[str, str] | None:

@@ -438,7 +438,12 @@ def _tokens(text: str) -> list[Tok]:
 # Every call _extract_one looks for names one of these; a file without any has nothing to give
 # (two thirds of the C++ files of a workspace), and tokenizing it is most of the cost.
 _CALL_WORDS = re.compile(r"create_(?:publisher|subscription|service|client|server)|advertise|subscribe"
-                         r"|declare_(?:parameter|or_get_parameter)")
+                         r"|declare_(?:parameter|or_get_parameter)|Transform(?:Listener|Broadcaster)")
+_TF_ENDPOINTS = {
+    "TransformListener": (("subscribers", "/tf"), ("subscribers", "/tf_static")),
+    "TransformBroadcaster": (("publishers", "/tf"),),
+    "StaticTransformBroadcaster": (("publishers", "/tf_static"),),
+}
 
 
 class _Found:
@@ -493,6 +498,12 @@ def _extract_one(path: str, text: str, iface: NodeInterface) -> None:
         name = t.text
         prev = toks[i - 1].text if i > 0 else ""
         prev2 = toks[i - 2].text if i > 1 else ""
+        if name in _TF_ENDPOINTS and prev == "::" and prev2 == "tf2_ros":
+            # tf2_ros' listener subscribes to (and its broadcasters publish on) the absolute /tf and
+            # /tf_static: nodes using them honour a ("/tf", "tf") remap like any other topic.
+            for kind, topic in _TF_ENDPOINTS[name]:
+                getattr(iface, kind).append(Endpoint(topic, "tf2_msgs/msg/TFMessage", _span(path, t)))
+            continue
         if name in _ENDPOINT_CALLS or name in ("create_server",):
             j = i + 1
             targ = None

@@ -256,3 +256,21 @@ node.declare_parameter('rate', 10.0, ParameterDescriptor(description='hz'))
 """)])
     assert {k: v.read_only for k, v in (py.parameters or {}).items()} == {
         "frame_id": True, "port": True, "rate": False}
+
+
+def test_cpp_tf2_listener_and_broadcasters_use_absolute_tf_topics():
+    text = """
+    #include <tf2_ros/transform_listener.h>
+    class Localizer : public rclcpp::Node {
+      std::shared_ptr<tf2_ros::TransformListener> listener_;
+      std::unique_ptr<tf2_ros::TransformBroadcaster> broadcaster_;
+      tf2_ros::StaticTransformBroadcaster static_broadcaster_{this};
+      // tf2_ros::TransformListener in a comment, TransformListener without tf2_ros:: are not counted
+      std::shared_ptr<TransformListener> other_;
+    };
+    """
+    i = extract_cpp([("/ws/src/loc/src/loc.cpp", text)])
+    assert [(e.name, e.type) for e in i.subscribers] == [("/tf", "tf2_msgs/msg/TFMessage"),
+                                                         ("/tf_static", "tf2_msgs/msg/TFMessage")]
+    assert [e.name for e in i.publishers] == ["/tf", "/tf_static"]
+    assert i.subscribers[0].span.line == 4

@@ -5,7 +5,7 @@ from typing import TYPE_CHECKING, Any
 
 from physai_lint.model import launch as L
 from physai_lint.model.span import Span
-from physai_lint.model.values import Unknown, Value, literal_of
+from physai_lint.model.values import BoolOp, Unknown, Value, literal_of
 
 from . import api
 from .convert_values import opt_value, span_at, to_condition, to_params, to_pvalue, to_value
@@ -244,8 +244,24 @@ class ActionBuilder:
                 opt_value(c, -1, "package"), opt_value(c, -1, "plugin"), opt_value(c, -1, "name"),
                 opt_value(c, -1, "namespace"), to_params(c.kwargs.get("parameters"), c.arg_span(-1, "parameters")),
                 self._remaps(c.kwargs.get("remappings"), c.arg_span(-1, "remappings")), tuple(extra), c.span,
-                to_condition(c.kwargs.get("condition"), c.span), self.id_of(c)))
+                self._branch_condition(c, to_condition(c.kwargs.get("condition"), c.span)), self.id_of(c)))
         return tuple(out)
+
+    def _branch_condition(self, obj: LObj, own: L.Condition | None) -> L.Condition | None:
+        """A description (not an action, so no Group can carry it) made under an ``if`` the
+        evaluator could not decide gets that ``if`` as its own condition, and-ed with the one it
+        was given: otherwise both branches of ``if mode == "a": ... else: ...`` load their
+        components."""
+        conds = [t.condition or L.Condition("if", (Unknown(t.reason, obj.span),), obj.span, "if ...")
+                 for t in obj.tags if t not in self.applied]
+        if not conds:
+            return own
+        if own is not None:
+            conds.append(own)
+        if len(conds) == 1:
+            return conds[0]
+        operands = tuple(c.value if c.kind == "if" else (BoolOp("not", (c.value,), c.span),) for c in conds)
+        return L.Condition("if", (BoolOp("and", operands, obj.span),), obj.span, " and ".join(c.raw for c in conds))
 
     def _handler(self, o: LObj, i: str, s: Span, cond: L.Condition | None) -> L.Action:
         h = o.arg(0, "event_handler")

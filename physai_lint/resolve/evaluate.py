@@ -79,6 +79,7 @@ class Evaluator:
         self.virtual: dict[str, Any] = {}
         # what those substitutions computed, by their inputs (nav2 hands one file to every server)
         self.file_memo: dict[tuple[Any, ...], Any] = {}
+        self.env_set: set[str | None] = set()  # variables a SetEnvironmentVariable wrote (None: unknown)
 
     def eval(self, value: v.Value | None, scope: Scope) -> str | None:
         if value is None:
@@ -142,7 +143,16 @@ class Evaluator:
             from physai_lint.resolve import nav2_common
 
             return nav2_common.evaluate(self, p, scope)
-        if isinstance(p, (v.EnvVar, v.ParamRef, v.FileContent, v.Anon)):
+        if isinstance(p, v.EnvVar):
+            name = self.eval(p.name, scope)
+            if p.default is not None:
+                self.eval(p.default, scope)
+            # The one variable a linter run knows: the distro it checks against (--distro), unless
+            # the launch sets it (or a variable whose name is unknown) before this point.
+            if name == "ROS_DISTRO" and self.packages is not None and not self.env_set & {"ROS_DISTRO", None}:
+                return getattr(self.packages, "distro", None)
+            return None
+        if isinstance(p, (v.ParamRef, v.FileContent, v.Anon)):
             for sub in (getattr(p, "name", None), getattr(p, "default", None), getattr(p, "path", None)):
                 if sub is not None:
                     self.eval(sub, scope)

@@ -200,7 +200,9 @@ class Instantiator:
             for val in (getattr(a, "message", None), getattr(a, "reason", None)):
                 self.ev.eval(val, scope)
         elif isinstance(a, ir.SetEnvironment):
-            self.ev.eval(a.name, scope)
+            name = self.ev.eval(a.name, scope)
+            if self.frame.active is not False:
+                self.ev.env_set.add(name)
             self.ev.eval(a.value, scope)
 
     # ---- arguments -----------------------------------------------------------------------------

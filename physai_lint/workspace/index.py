@@ -81,6 +81,7 @@ class PackageIndex:
         self._installed_exes: dict[str, frozenset[str] | None] = {}
         self._installed_plugins: dict[str, frozenset[str] | None] = {}
         self._by_dir: list[tuple[str, WorkspacePackage]] = []
+        self._dir_map: dict[str, WorkspacePackage] = {}  # _by_dir as a dict, made on first use
 
     # ---- identity -------------------------------------------------------------------------------
 
@@ -196,10 +197,19 @@ class PackageIndex:
     def package_of_source(self, path: str) -> WorkspacePackage | None:
         """The workspace package whose source directory holds ``path``."""
         path = _norm(path)
-        for d, pkg in self._by_dir:
-            if path == d or path.startswith(d + "/"):
+        if not self._dir_map and self._by_dir:
+            for d, pkg in self._by_dir:
+                self._dir_map.setdefault(d, pkg)
+        # The deepest package directory holding it: walk up from the path (a dict lookup per
+        # level, instead of a scan of every package per call: quadratic on 1,000 packages).
+        while True:
+            pkg = self._dir_map.get(path)
+            if pkg is not None:
                 return pkg
-        return None
+            parent = posixpath.dirname(path)
+            if parent == path or not parent:
+                return None
+            path = parent
 
     def locate(self, path: str) -> Located:
         """Where a path launch would open comes from (see module docstring)."""

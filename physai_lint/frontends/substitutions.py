@@ -83,7 +83,7 @@ class _Ctx:
         return Span(self.file, l1, c1, l2, c2)
 
 
-class positions_from(Sequence[tuple[int, int]]):  # noqa: N801 - used like the function it was
+class positions_from(Sequence[tuple[int, int]]):  # used like the function it was
     """(line, col) of every character of ``text`` (and one past the end), starting at line:col.
 
     Computed on access from the line starts: a whole parameter file parsed for ``$(...)`` asks for

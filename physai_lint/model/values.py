@@ -144,6 +144,16 @@ class IfElse:
 
 
 @dataclass(frozen=True, slots=True)
+class StrMethod:
+    """A Python launch file's ``.lower()`` (``.upper()``, ``.strip()``, ...) of a string only known
+    at launch time, e.g. ``LaunchConfiguration('x').perform(context).lower() == 'true'``."""
+
+    method: Literal["lower", "upper", "casefold", "strip", "lstrip", "rstrip"]
+    value: "Value"
+    span: Span | None = None
+
+
+@dataclass(frozen=True, slots=True)
 class ParamRef:
     """``$(param NAME)``: the value of a ``SetParameter`` in scope."""
 
@@ -228,7 +238,7 @@ class Unknown:
 Subst = Union[
     Text, LaunchConfig, EnvVar, FindPackage, ExecInPackage, FindExecutable, PathJoin, ThisFileDir,
     ThisFile, Command, PythonExpr, Anon, BoolOp, Compare, IfElse, ParamRef, FileContent, Unknown,
-    RewrittenYaml, ReplaceString, LaunchConfigAsBool, HasNodeParams,
+    RewrittenYaml, ReplaceString, LaunchConfigAsBool, HasNodeParams, StrMethod,
 ]
 Value = tuple[Subst, ...]
 

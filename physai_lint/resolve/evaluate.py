@@ -131,6 +131,9 @@ class Evaluator:
                 return None
             equal = _as_bool_or_float(left) == _as_bool_or_float(right)
             return str(equal if p.op == "equals" else not equal).lower()
+        if isinstance(p, v.StrMethod):
+            inner = self.eval(p.value, scope)
+            return None if inner is None else getattr(inner, p.method)()
         if isinstance(p, v.IfElse):
             cond = self.eval(p.condition, scope)
             truth = condition_truth(cond) if cond is not None else None

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Any
 import yaml
 
 from physai_lint.model.span import Span
-from physai_lint.model.values import FindPackage, LaunchConfig, Text
+from physai_lint.model.values import FindPackage, LaunchConfig, StrMethod, Text
 
 from . import api, bounds, builtin_calls, classes, symbolic
 from .convert_values import to_value
@@ -303,6 +303,10 @@ def load_data(ev: Evaluator, qual: str, src: Any, span: Span) -> Any:
         return Opaque("the file could not be parsed", span)
 
 
+# str methods of a launch-time string that stay a launch-time string (the resolver applies them).
+_SYM_STR_METHODS = frozenset({"lower", "upper", "casefold", "strip", "lstrip", "rstrip"})
+
+
 def call_method(ev: Evaluator, obj: Any, name: str, args: list[Any], kwargs: dict[str, Any], span: Span) -> Any:
     if isinstance(obj, LObj):
         if name in ("add_action", "add_entity") and "entities" in obj.extra and args:
@@ -324,6 +328,8 @@ def call_method(ev: Evaluator, obj: Any, name: str, args: list[Any], kwargs: dic
         if name == "read":
             return read_text(ev, obj.path, span)
         return Opaque(f"file.{name}", span)
+    if isinstance(obj, SymStr) and name in _SYM_STR_METHODS and not args and not kwargs:
+        return SymStr((StrMethod(name, obj.value, span),))  # type: ignore[arg-type]
     if isinstance(obj, KPath):
         if name == "read_text":
             return read_text(ev, obj.path, span)

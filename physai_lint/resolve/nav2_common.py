@@ -370,21 +370,26 @@ def _rewritten_yaml(ev: Evaluator, p: v.RewrittenYaml, path: str, params: Any, k
     return out.path if out is not None else None
 
 
+def _cached(cache: OrderedDict[Any, Any], size: int, key: Any, make: Callable[[], Any]) -> Any:
+    """``cache[key]``, made by ``make()`` on a miss; the least recently used entry beyond ``size``
+    is dropped."""
+    if key in cache:
+        cache.move_to_end(key)
+        return cache[key]
+    value = cache[key] = make()
+    if len(cache) > size:
+        cache.popitem(last=False)
+    return value
+
+
 _LOADED: OrderedDict[tuple[str, str, str | None], Any] = OrderedDict()
-_LOADED_MAX = 32
 
 
 def _loaded(text: str, file: str, virtual: VirtualFile | None
             ) -> tuple[Any, dict[int, dict[Any, tuple[Span, Span]]]] | None:
     """``_load`` of a source, once per process: the caller must not change it."""
-    key = (text, file, virtual.path if virtual else None)
-    if key in _LOADED:
-        _LOADED.move_to_end(key)
-    else:
-        _LOADED[key] = _load(text, file, _node_spans(file, virtual))
-        if len(_LOADED) > _LOADED_MAX:
-            _LOADED.popitem(last=False)
-    return _LOADED[key]
+    return _cached(_LOADED, 32, (text, file, virtual.path if virtual else None),
+                   lambda: _load(text, file, _node_spans(file, virtual)))
 
 
 def _loaded_copy(text: str, file: str, virtual: VirtualFile | None
@@ -427,22 +432,17 @@ _DUMPER = getattr(yaml, "CDumper", yaml.Dumper)
 # The temporary files of one process, by everything that decides their text and positions: the
 # same input gives the same file (and the same parsed model) to every entry and every run.
 _SHARED: OrderedDict[tuple[Any, ...], VirtualFile | None] = OrderedDict()
-_SHARED_MAX = 512
 
 
 def _shared(ev: Evaluator, key: tuple[Any, ...], make: Callable[[str], VirtualFile | None]) -> VirtualFile | None:
     """The virtual file for ``key``, made once; registered with ``ev`` so that later substitutions
     of this entry find it by path. Its path is named by the key's digest, so it is the same in every
     entry and in every process (``--jobs``)."""
-    if key in _SHARED:
-        _SHARED.move_to_end(key)
-        vf = _SHARED[key]
-    else:
+    def named() -> VirtualFile | None:
         digest = hashlib.sha256(repr(key).encode("utf-8", "surrogatepass")).hexdigest()[:16]
-        vf = make(f"{VIRTUAL_DIR}/{key[0]}-{digest}.yaml")
-        _SHARED[key] = vf
-        if len(_SHARED) > _SHARED_MAX:
-            _SHARED.popitem(last=False)
+        return make(f"{VIRTUAL_DIR}/{key[0]}-{digest}.yaml")
+
+    vf: VirtualFile | None = _cached(_SHARED, 512, key, named)
     if vf is not None:
         ev.virtual[vf.path] = vf
     return vf

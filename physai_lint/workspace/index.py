@@ -80,8 +80,7 @@ class PackageIndex:
         self._exists_cache: dict[str, bool] = {}
         self._installed_exes: dict[str, frozenset[str] | None] = {}
         self._installed_plugins: dict[str, frozenset[str] | None] = {}
-        self._by_dir: list[tuple[str, WorkspacePackage]] = []
-        self._dir_map: dict[str, WorkspacePackage] = {}  # _by_dir as a dict, made on first use
+        self._by_dir: dict[str, WorkspacePackage] = {}  # source directory -> package
 
     # ---- identity -------------------------------------------------------------------------------
 
@@ -197,13 +196,10 @@ class PackageIndex:
     def package_of_source(self, path: str) -> WorkspacePackage | None:
         """The workspace package whose source directory holds ``path``."""
         path = _norm(path)
-        if not self._dir_map and self._by_dir:
-            for d, pkg in self._by_dir:
-                self._dir_map.setdefault(d, pkg)
         # The deepest package directory holding it: walk up from the path (a dict lookup per
         # level, instead of a scan of every package per call: quadratic on 1,000 packages).
         while True:
-            pkg = self._dir_map.get(path)
+            pkg = self._by_dir.get(path)
             if pkg is not None:
                 return pkg
             parent = posixpath.dirname(path)
@@ -490,15 +486,17 @@ def build_package_index(workspace_root: str, distro: str = "humble",
         if pkg is None:
             continue
         if pkg.name in index.packages:
-            other = index.packages[pkg.name]
-            msg = (f'duplicate package name "{pkg.name}" (also in {other.path}); '
-                   "colcon refuses to build this workspace")
-            index.problems.append((pkg.package_xml, msg, 1))
+            index.problems.append(_duplicate(pkg.package_xml, pkg.name, index.packages[pkg.name].path))
             continue
         index.packages[pkg.name] = pkg
-    index._by_dir = sorted(((p.path, p) for p in index.packages.values()),
-                           key=lambda t: -len(t[0]))
+    index._by_dir = {p.path: p for p in index.packages.values()}
     return index
+
+
+def _duplicate(package_xml: str, name: str, first_dir: str) -> tuple[str, str, int]:
+    """The problem of a second package with an already indexed name."""
+    message = f'duplicate package name "{name}" (also in {first_dir}); colcon refuses to build this workspace'
+    return package_xml, message, 1
 
 
 _COMMENT_RX = re.compile(r"<!--.*?-->|<\?.*?\?>", re.DOTALL)
@@ -514,9 +512,7 @@ def _scoped_problems(index: PackageIndex, pkg_dirs: list[str], scope: Iterable[s
             continue
         name = man.name or posixpath.basename(pkg_dir)
         if name in first:
-            msg = (f'duplicate package name "{name}" (also in {first[name]}); '
-                   "colcon refuses to build this workspace")
-            index.problems.append((pkg_dir + "/package.xml", msg, 1))
+            index.problems.append(_duplicate(pkg_dir + "/package.xml", name, first[name]))
         else:
             first[name] = pkg_dir
 

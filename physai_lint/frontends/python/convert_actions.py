@@ -70,8 +70,12 @@ class ActionBuilder:
             return [self.wrapped(v)]
         return [self._opaque(f"not a launch action ({type_name(v)})", span)]
 
+    def _new_tags(self, obj: LObj) -> list[CondTag]:
+        """The branches ``obj`` was made under that no enclosing action carries already."""
+        return [t for t in obj.tags if t not in self.applied]
+
     def wrapped(self, obj: LObj) -> L.Action:
-        new_tags = [t for t in obj.tags if t not in self.applied]
+        new_tags = self._new_tags(obj)
         for t in new_tags:
             if t.condition is None:
                 return L.OpaqueAction(self.id_of(obj), obj.span, None, t.reason)
@@ -253,7 +257,7 @@ class ActionBuilder:
         was given: otherwise both branches of ``if mode == "a": ... else: ...`` load their
         components."""
         conds = [t.condition or L.Condition("if", (Unknown(t.reason, obj.span),), obj.span, "if ...")
-                 for t in obj.tags if t not in self.applied]
+                 for t in self._new_tags(obj)]
         if not conds:
             return own
         if own is not None:

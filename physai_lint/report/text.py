@@ -9,8 +9,8 @@
 
 Colour is decided by the caller (``color=True`` only on a TTY without ``NO_COLOR``). Without colour
 the report is built as plain text, which is what rich prints then (control codes stripped, no
-wrapping); rich, ~15-20 ms to import, is used for colour, ``--statistics`` and any tab (rich expands
-tabs by cell width).
+wrapping, tabs expanded by cell width); rich, ~15-20 ms to import, is used for colour and
+``--statistics``.
 """
 from __future__ import annotations
 
@@ -45,9 +45,7 @@ def render(
     **_: Any,
 ) -> str:
     if not color and not statistics:
-        out = render_plain(report, show_source=show_source, quiet=quiet, read_source=read_source)
-        if "\t" not in out:
-            return out
+        return render_plain(report, show_source=show_source, quiet=quiet, read_source=read_source)
     return render_rich(report, color=color, show_source=show_source, statistics=statistics, quiet=quiet,
                        read_source=read_source)
 
@@ -55,7 +53,7 @@ def render(
 def render_plain(
     report: ReportLike, *, show_source: bool = True, quiet: bool = False, read_source: SourceReader | None = None
 ) -> str:
-    """The report without colour, built as plain text: what ``render_rich`` prints unless a tab occurs."""
+    """The report without colour, built as plain text: what ``render_rich`` prints without colour."""
     console = _PlainConsole()
     _render(console, _PlainText, report, show_source, False, quiet, read_source)
     return console.file.getvalue()
@@ -126,7 +124,28 @@ class _PlainConsole:
         self.file = io.StringIO()
 
     def print(self, text: _PlainText | None = None) -> None:
-        self.file.write(f"{text.plain if text is not None else ''}\n")
+        plain = text.plain if text is not None else ""
+        if "\t" in plain:
+            plain = "\n".join(_expand_tabs(line) for line in plain.split("\n"))
+        self.file.write(f"{plain}\n")
+
+
+def _expand_tabs(line: str, tab_size: int = 8) -> str:
+    """A tab as ``rich.text.Text.expand_tabs`` prints it: a space, then up to the next multiple of
+    ``tab_size`` cells (wide characters count two)."""
+    if line.isascii() and line.replace("\t", "").isprintable():  # else: control codes are 0 cells
+        return line.expandtabs(tab_size)
+    from rich.cells import cell_len
+
+    out, position = [], 0
+    parts = line.split("\t")
+    for part in parts[:-1]:
+        position += cell_len(part) + 1
+        spaces = -position % tab_size
+        position += spaces
+        out.append(part + " " * (1 + spaces))
+    out.append(parts[-1])
+    return "".join(out)
 
 
 def summary(report: ReportLike, findings: list[Finding]) -> str:

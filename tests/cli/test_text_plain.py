@@ -44,13 +44,11 @@ def _reports(draw: st.DrawFn) -> tuple[_Report, str]:
     return _Report(findings, [FILE], baseline_suppressed=draw(st.integers(0, 2))), source
 
 
-@settings(max_examples=300, deadline=None)
+@settings(max_examples=1000, deadline=None)
 @given(_reports(), st.booleans(), st.booleans())
 def test_plain_text_is_what_rich_prints(drawn: tuple[_Report, str], show_source: bool, quiet: bool) -> None:
     report, source = drawn
     kw = {"show_source": show_source, "quiet": quiet, "read_source": lambda _p: source}
     rich = text.render_rich(report, **kw)  # type: ignore[arg-type]
     assert text.render(report, {}, **kw) == rich  # type: ignore[arg-type]
-    plain = text.render_plain(report, **kw)  # type: ignore[arg-type]
-    if "\t" not in plain:  # render() falls back to rich for tabs, which rich expands by cell width
-        assert plain == rich
+    assert text.render_plain(report, **kw) == rich  # type: ignore[arg-type]

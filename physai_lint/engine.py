@@ -103,17 +103,30 @@ def build_project(opts: CheckOptions, cwd: str | None = None, progress: Any = No
         return store.launch(path, packages.read_text if hasattr(packages, "read_text") else None)
 
     explicit = set(found.explicit)
-    launch_files = [p for p in found.launch_files]
-    results = []
-    progress.stage("resolving", len(launch_files))
-    for entry in launch_files:
-        results.append(resolve_launch(entry, dict(opts.launch_args), loader, packages,
-                                      explicit_entry=entry in explicit))
+    launch_files = list(found.launch_files)
+
+    def resolve(entry: str) -> Any:
         progress.advance()
+        return resolve_launch(entry, dict(opts.launch_args), loader, packages,
+                              explicit_entry=entry in explicit)
+
+    progress.stage("resolving", len(launch_files))
     # A file that another analysed file includes is analysed through its includer (which gives it
     # its real arguments and namespace), not on its own; a file nobody includes is a root.
-    included = {f for r in results for f in r.files[1:] if f != r.entry}
-    launches = [r for r in results if r.entry not in included] or results
+    # A file without an include action can only be a root or dropped, and adds nothing to what
+    # is included: so includers go first, and such a file that one of them includes is never
+    # resolved on its own (a third of the entries of a large workspace).
+    leaves = {p for p in launch_files if not _has_include(loader(p))}
+    by_entry = {p: resolve(p) for p in launch_files if p not in leaves}
+    included = {f for r in by_entry.values() for f in r.files[1:] if f != r.entry}
+    skipped = sorted(leaves & included)
+    by_entry.update((p, resolve(p)) for p in sorted(leaves - included))
+    progress.advance(len(skipped))
+    results = [by_entry[p] for p in launch_files if p in by_entry]
+    launches = [r for r in results if r.entry not in included]
+    if not launches:  # every file is included by another (include cycles): all of them are roots
+        by_entry.update((p, resolve(p)) for p in skipped)
+        launches = [by_entry[p] for p in launch_files]
     targets = set(paths) | set(found.launch_files) | set(found.param_files)
     for r in launches:
         if r.entry in explicit or any(r.entry.startswith(p.rstrip("/") + "/") for p in paths) or \
@@ -128,6 +141,19 @@ def build_project(opts: CheckOptions, cwd: str | None = None, progress: Any = No
         diagnostics.extend(r.diagnostics)
     return Project(cwd, root, store, packages, launches, [r.entry for r in launches], param_models,
                    interfaces, frozenset(targets), diagnostics)
+
+
+def _has_include(lf: Any) -> bool:
+    """Whether a parsed launch file has an include action anywhere (in groups, timers, handlers)."""
+    from physai_lint.model import launch as ir
+
+    stack = list(lf.actions) if lf is not None else []
+    while stack:
+        action = stack.pop()
+        if isinstance(action, ir.Include):
+            return True
+        stack.extend(getattr(action, "actions", ()))
+    return False
 
 
 def _param_sources(r: Any) -> set[str]:

@@ -39,13 +39,15 @@ from physai_lint.model.values import (
     Value,
 )
 
-# name -> (min args, max args or None for unbounded)
+# name -> (min args, max args or None for unbounded), as each upstream ``parse`` classmethod checks
+# them. Where distros differ the union is accepted (this parser does not know the distro): "param"
+# takes an optional default since jazzy (launch_ros ``Parameter.parse``), humble takes one argument.
 ARITY: dict[str, tuple[int, int | None]] = {
     "var": (1, 2), "env": (1, 2), "optenv": (1, 2), "find-pkg-share": (1, 1),
     "find-pkg-prefix": (1, 1), "find-exec": (1, 1), "exec-in-pkg": (2, 2), "dirname": (0, 0),
     "filename": (0, 0), "anon": (1, 1), "eval": (1, 2), "command": (1, 2), "not": (1, 1),
     "and": (2, 2), "or": (2, 2), "any": (1, None), "all": (1, None), "equals": (2, 2),
-    "not-equals": (2, 2), "if": (3, 3), "param": (1, 1), "file-content": (1, 1),
+    "not-equals": (2, 2), "if": (2, 3), "param": (1, 2), "file-content": (1, 1),
     "log_dir": (0, 0), "launch_log_dir": (0, 0),
 }
 SUBSTITUTION_NAMES: tuple[str, ...] = tuple(sorted(ARITY))
@@ -344,8 +346,8 @@ _BUILDERS: dict[str, Callable[[list[Value], Span], Subst]] = {
     "all": lambda a, s: BoolOp("all", tuple(a), s),
     "equals": lambda a, s: Compare("equals", a[0], a[1], s),
     "not-equals": lambda a, s: Compare("not-equals", a[0], a[1], s),
-    "if": lambda a, s: IfElse(a[0], a[1], a[2], s),
-    "param": lambda a, s: ParamRef(a[0], s),
+    "if": lambda a, s: IfElse(a[0], a[1], _opt(a, 2) or (), s),  # else value defaults to ""
+    "param": lambda a, s: ParamRef(a[0], s, _opt(a, 1)),
     "file-content": lambda a, s: FileContent(a[0], s),
     "log_dir": lambda a, s: Unknown("log directory ($(log_dir))", s),
     "launch_log_dir": lambda a, s: Unknown("launch log directory ($(launch_log_dir))", s),

@@ -135,7 +135,7 @@ class Compare:
 
 @dataclass(frozen=True, slots=True)
 class IfElse:
-    """``IfElseSubstitution`` / ``$(if COND A B)``."""
+    """``IfElseSubstitution`` / ``$(if COND A [B])``; a missing value is ``()``, the empty string."""
 
     condition: "Value"
     if_value: "Value"
@@ -155,10 +155,11 @@ class StrMethod:
 
 @dataclass(frozen=True, slots=True)
 class ParamRef:
-    """``$(param NAME)``: the value of a ``SetParameter`` in scope."""
+    """``$(param NAME [DEFAULT])``: the value of a ``SetParameter`` in scope (DEFAULT since jazzy)."""
 
     name: "Value"
     span: Span | None = None
+    default: "Value | None" = None
 
 
 @dataclass(frozen=True, slots=True)

@@ -95,14 +95,40 @@ def test_unescaped_lone_dollar_is_l007() -> None:
     ("$(dirname)", ThisFileDir), ("$(filename)", ThisFile), ("$(anon n)", Anon),
     ("$(command 'ls -l')", Command), ("$(command ls warn)", Command), ("$(not a)", BoolOp),
     ("$(and a b)", BoolOp), ("$(or a b)", BoolOp), ("$(any a b c)", BoolOp), ("$(all a)", BoolOp),
-    ("$(equals a b)", Compare), ("$(not-equals a b)", Compare), ("$(if c a b)", IfElse),
-    ("$(param p)", ParamRef), ("$(file-content f)", FileContent), ("$(log_dir)", Unknown),
+    ("$(equals a b)", Compare), ("$(not-equals a b)", Compare), ("$(if c a b)", IfElse), ("$(if c a)", IfElse),
+    ("$(param p)", ParamRef), ("$(param p d)", ParamRef), ("$(file-content f)", FileContent), ("$(log_dir)", Unknown),
     ("$(launch_log_dir)", Unknown),
 ])
 def test_every_substitution(text: str, cls: type) -> None:
     value, diags = parse(text)
     assert diags == [] and len(value) == 1 and isinstance(value[0], cls)
     assert value[0].span == Span(F, 1, 1, 1, len(text) + 1)
+
+
+def test_if_without_else_value_is_valid() -> None:
+    # launch's IfElseSubstitution.parse takes 2 or 3 arguments; else_value defaults to ''
+    value, diags = parse("$(if $(var on) $(var frame_id))")
+    assert diags == []
+    sub = value[0]
+    assert isinstance(sub, IfElse) and sub.else_value == ()
+    assert isinstance(sub.if_value[0], LaunchConfig)
+
+
+def test_param_with_default_is_valid() -> None:
+    # launch_ros Parameter.parse takes a default as second argument since jazzy
+    value, diags = parse("$(param rate 10)")
+    assert diags == [] and isinstance(value[0], ParamRef)
+    assert literal_of(value[0].name) == "rate" and literal_of(value[0].default) == "10"
+
+
+def test_if_without_else_value_evaluates_to_empty_when_false(demo_graph) -> None:  # type: ignore[no-untyped-def]
+    files = {"launch/a.launch.xml": """<launch>
+  <arg name="suffix" default="false"/>
+  <node pkg="demo" exec="talker" name="talker$(if $(var suffix) _on)"/>
+</launch>
+"""}
+    assert set(demo_graph(files, "launch/a.launch.xml")) == {"talker"}
+    assert set(demo_graph(files, "launch/a.launch.xml", suffix="true")) == {"talker_on"}
 
 
 def test_optenv_is_optional() -> None:
@@ -121,7 +147,7 @@ def test_unknown_substitution_with_did_you_mean() -> None:
 
 
 @pytest.mark.parametrize("text", ["$(eval 10 * 3)", "$(var)", "$(var a b c)", "$(dirname x)",
-                                  "$(if a b)", "$(exec-in-pkg x)"])
+                                  "$(if a)", "$(if a b c d)", "$(param a b c)", "$(exec-in-pkg x)"])
 def test_wrong_arity(text: str) -> None:
     value, diags = parse(text)
     assert [d.code for d in diags] == ["L007"] and "expects" in diags[0].message

@@ -125,7 +125,7 @@ def subst(o: LObj) -> V.Subst:
     if n == "IfElseSubstitution":
         return V.IfElse(_val(o, 0, "condition"), _val(o, 1, "if_value"), _val(o, 2, "else_value"), s)
     if n == "Parameter":
-        return V.ParamRef(_val(o, 0, "name"), s)
+        return V.ParamRef(_val(o, 0, "name"), s, opt_value(o, 1, "default"))
     if n == "FileContent":
         return V.FileContent(_val(o, 0, "path"), s)
     if o.qual in api.NAV2_SUBSTITUTIONS:

@@ -223,7 +223,9 @@ class _Interp:
             a = self.args(cmd)
             if a:
                 self.info.python_packages.add(a[0])
-        elif name == "ament_auto_package":
+        elif name in ("ament_auto_package", "autoware_ament_auto_package"):
+            # autoware_cmake's autoware_ament_auto_package re-implements ament_auto_package (it only
+            # installs headers to include/ instead of include/<pkg>): same INSTALL_TO_SHARE result.
             self.auto_package = True
             a = self.args(cmd)
             if "INSTALL_TO_SHARE" in a:

@@ -54,6 +54,16 @@ install(TARGETS ${UNKNOWN_VAR} DESTINATION lib/${PROJECT_NAME})
     assert info.complete
 
 
+def test_cmake_autoware_ament_auto_package_installs_to_share(tmp_path):
+    # autoware_cmake's drop-in replacement for ament_auto_package (autoware_core uses it)
+    info = _cmake(tmp_path, "project(pkg)\nament_auto_add_executable(n src/n.cpp)\n"
+                            "autoware_ament_auto_package(INSTALL_TO_SHARE config launch)\n")
+    assert [(r.dest, r.source, r.contents_only) for r in info.rules if r.kind == "directory"] == [
+        ("share/pkg", str(tmp_path / "config"), False), ("share/pkg", str(tmp_path / "launch"), False)]
+    assert any(r.source == str(tmp_path / "package.xml") for r in info.rules)
+    assert info.executables == {"n"}
+
+
 def test_cmake_project_name_differs_from_package(tmp_path):
     # launch looks in lib/<package name>: a different project() name installs elsewhere
     info = _cmake(tmp_path, "project(other)\nadd_executable(n x.cpp)\n"

@@ -12,13 +12,17 @@ from physai_lint.model.values import Command, FindPackage, PathJoin, literal_of
 
 
 def _references(ctx: CheckContext) -> Iterator[tuple[str, Span, str]]:
-    """(referenced package, where, launch file) in a deterministic order."""
+    """(referenced package, where, launch file) of every package named literally.
+
+    A name built from a launch configuration (``$(var vehicle_model)_description``) is chosen by
+    whoever starts the launch; its default is one choice among many, which the package.xml of the
+    launch file cannot list."""
     for launch in ctx.launches:
         for node in launch.nodes:
-            if node.package:
+            if node.package and not node.package_from_config:
                 yield node.package, node.spans.get("package", node.span), node.file
-        for name, span, file in launch.package_refs:
-            if span is not None:
+        for name, span, file, from_config in launch.package_refs:
+            if span is not None and not from_config:
                 yield name, span, file
 
 

@@ -60,7 +60,7 @@ def unknown_package(ctx: CheckContext) -> Iterator[Diagnostic]:
             f'package "{node.package}" is not in the workspace or the {ctx.distro} distro{extra}',
             help=fix, key=node.package)
     for launch in ctx.launches:
-        for name, span, _file in launch.package_refs:
+        for name, span, _file, _from_config in launch.package_refs:
             if span is None or ctx.packages.has_package(name) or (span, name) in reported:
                 continue
             reported.add((span, name))

@@ -39,7 +39,7 @@ class Scope:
 
 
 ReadHook = Callable[[str, Span | None, bool, bool], None]  # name, span, defined, has_default
-PackageHook = Callable[[str, Span | None], None]
+PackageHook = Callable[[str, Span | None, bool], None]  # name, span, named by a launch configuration
 
 
 def condition_truth(text: str) -> bool | None:
@@ -80,6 +80,8 @@ class Evaluator:
         # what those substitutions computed, by their inputs (nav2 hands one file to every server)
         self.file_memo: dict[tuple[Any, ...], Any] = {}
         self.env_set: set[str | None] = set()  # variables a SetEnvironmentVariable wrote (None: unknown)
+        # launch configurations looked up so far: a value whose evaluation moves it depends on one
+        self.config_lookups = 0
 
     def eval(self, value: v.Value | None, scope: Scope) -> str | None:
         if value is None:
@@ -116,9 +118,10 @@ class Evaluator:
             return f if isinstance(f, str) else None
         if isinstance(p, v.ExecInPackage):
             exe = self.eval(p.executable, scope)
+            before = self.config_lookups
             pkg = self.eval(p.package, scope)
             if pkg is not None and self.on_package:
-                self.on_package(pkg, p.span)
+                self.on_package(pkg, p.span, self.config_lookups != before)
             prefix = self.packages.prefix_dir(pkg) if (self.packages and pkg) else None
             return posixpath.join(prefix, "lib", pkg or "", exe) if (prefix and exe and pkg) else None
         if isinstance(p, v.PythonExpr):
@@ -169,6 +172,7 @@ class Evaluator:
         name = self.eval(p.name, scope)
         if name is None:
             return None
+        self.config_lookups += 1
         if name in scope.configs:
             if self.on_read:
                 self.on_read(name, p.span, True, p.default is not None)
@@ -181,11 +185,12 @@ class Evaluator:
         return None
 
     def _find_package(self, p: v.FindPackage, scope: Scope) -> str | None:
+        before = self.config_lookups
         pkg = self.eval(p.package, scope)
         if pkg is None:
             return None
         if self.on_package:
-            self.on_package(pkg, p.span)
+            self.on_package(pkg, p.span, self.config_lookups != before)
         if self.packages is None:
             return None
         if p.kind == "share":

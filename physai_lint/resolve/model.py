@@ -114,6 +114,7 @@ class NodeInstance:
     spans: dict[str, Span] = field(default_factory=dict)  # "package", "executable", "name", ...
     name_source: str | None = None  # e.g. 'launch argument "robot" (default "r1")'
     namespace_source: str | None = None
+    package_from_config: bool = False  # the package name came from a launch configuration
 
 
 @dataclass(frozen=True, slots=True)
@@ -188,8 +189,9 @@ class LaunchResult:
     never_started: list[tuple[Span, str]] = field(default_factory=list)
     # Timers: (span, period seconds or None when unknown, raw period text)
     timers: list[tuple[Span, float | None, str]] = field(default_factory=list)
-    # Packages referenced by FindPackageShare/$(find-pkg-share)/get_package_share_directory/...
-    package_refs: list[tuple[str, Span | None, str]] = field(default_factory=list)  # name, span, file
+    # Packages referenced by FindPackageShare/$(find-pkg-share)/get_package_share_directory/...:
+    # (name, span, file, whether the name came from a launch configuration, e.g. $(var model)_description)
+    package_refs: list[tuple[str, Span | None, str, bool]] = field(default_factory=list)
     # Every PushRosNamespace: (span, the namespace as written, the resulting namespace or None)
     pushed_namespaces: list[tuple[Span, str | None, str | None]] = field(default_factory=list)
     # SetRemap/SetParameter inside a scoped group that leak out of it: (span, what)

@@ -50,6 +50,12 @@ class NodeBuilder:
             return None, False
         return self.inst.ev.eval(value, scope), True
 
+    def _package(self, value: v.Value | None, scope: Scope) -> tuple[str | None, bool]:
+        """(package, whether its name came from a launch configuration, e.g. ``$(var pkg)``)."""
+        before = self.inst.ev.config_lookups
+        package, _ = self._eval(value, scope)
+        return package, self.inst.ev.config_lookups != before
+
     def _namespace(self, raw: str | None, given: bool, scope: Scope) -> tuple[str | None, bool]:
         """(absolute namespace or None when unknown, whether launch specifies one)."""
         if (given and raw is None) or (NS in scope.configs and scope.configs[NS] is None):
@@ -153,7 +159,7 @@ class NodeBuilder:
     # ---- actions ------------------------------------------------------------------------------
     def node(self, a: ir.NodeAction, scope: Scope) -> None:
         fr = self.inst.frame
-        package, _ = self._eval(a.package, scope)
+        package, package_from_config = self._package(a.package, scope)
         executable, _ = self._eval(a.executable, scope)
         name, name_given = self._eval(a.name, scope)
         ns_raw, ns_given = self._eval(a.namespace, scope)
@@ -180,7 +186,7 @@ class NodeBuilder:
             span=a.span, file=fr.file, action=a, action_id=f"{fr.file}#{a.id}",
             include_chain=fr.chain[:-1], name_explicit=name_given, namespace_explicit=ns_specified,
             arguments=args, in_timer=fr.deferred is not None, timer_lost=fr.lost,
-            spans={k: s for k, s in a.field_spans},
+            spans={k: s for k, s in a.field_spans}, package_from_config=package_from_config,
         )
         self._register(inst_, inst_.action_id)
         for cn in a.composable_nodes:
@@ -195,7 +201,7 @@ class NodeBuilder:
 
             cond = self.inst.ev.condition(cn.condition.kind, cn.condition.value, scope)
             active = combine(active, cond)
-        package, _ = self._eval(cn.package, scope)
+        package, package_from_config = self._package(cn.package, scope)
         plugin, _ = self._eval(cn.plugin, scope)
         name, name_given = self._eval(cn.name, scope)
         ns_raw, ns_given = self._eval(cn.namespace, scope)
@@ -220,7 +226,7 @@ class NodeBuilder:
             param_sources=params, span=cn.span, file=fr.file, action=cn,
             action_id=f"{fr.file}#{cn.id or cn.span.line}", include_chain=fr.chain[:-1],
             name_explicit=name_given, namespace_explicit=specified, container=container,
-            container_id=container_id,
+            container_id=container_id, package_from_config=package_from_config,
         )
         self.inst.result.nodes.append(inst_)
         if container_id is not None:

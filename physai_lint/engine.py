@@ -95,9 +95,6 @@ def build_project(opts: CheckOptions, cwd: str | None = None, progress: Any = No
     store.preload(found.launch_files, found.param_files, opts.distro, opts.jobs or default_jobs(),
                   progress)
     diagnostics: list[Diagnostic] = []
-    for path, message, line in getattr(packages, "problems", []):
-        diagnostics.append(Diagnostic("X001", Span.point(path, max(line or 1, 1)), message,
-                                      help="fix package.xml so that colcon can read it"))
 
     def loader(path: str) -> Any:
         return store.launch(path, packages.read_text if hasattr(packages, "read_text") else None)
@@ -136,6 +133,12 @@ def build_project(opts: CheckOptions, cwd: str | None = None, progress: Any = No
     param_models = _load_params(store, sorted(set(found.param_files) | _all_param_sources(launches)),
                                 opts.distro, diagnostics)
     interfaces = _interfaces(opts, cwd, packages, diagnostics)
+    # Packages are read when first asked for; the checked ones are read here, for their problems.
+    if hasattr(packages, "read_packages_holding"):
+        packages.read_packages_holding(targets)
+    for path, message, line in getattr(packages, "problems", []):
+        diagnostics.append(Diagnostic("X001", Span.point(path, max(line or 1, 1)), message,
+                                      help="fix package.xml so that colcon can read it"))
     diagnostics.extend(store.diagnostics)
     for r in launches:
         diagnostics.extend(r.diagnostics)

@@ -8,7 +8,7 @@ import difflib
 import os
 import posixpath
 import re
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 from typing import Literal
 
@@ -63,13 +63,51 @@ def _norm(path: str) -> str:
     return posixpath.normpath(os.path.abspath(path).replace(os.sep, "/"))
 
 
+class _Packages(Mapping[str, WorkspacePackage]):
+    """The workspace packages by name. Names are known when the index is built; a package is read
+    (catkin_pkg, CMakeLists.txt or setup.py, a file listing) the first time it is asked for, so a
+    check of one launch file reads the packages it names, not all of a large workspace's."""
+
+    def __init__(self, index: PackageIndex) -> None:
+        self._index = index
+        self._dirs: dict[str, str] = {}  # name -> package directory, in crawl order
+        self._read: dict[str, WorkspacePackage] = {}
+
+    def add(self, name: str, pkg_dir: str, pkg: WorkspacePackage | None = None) -> None:
+        self._dirs[name] = pkg_dir
+        if pkg is not None:
+            self._read[name] = pkg
+
+    def dir_of(self, name: str) -> str:
+        return self._dirs[name]
+
+    def __getitem__(self, name: str) -> WorkspacePackage:
+        pkg = self._read.get(name)
+        if pkg is None:
+            pkg = _read_package(self._index, self._dirs[name])
+            if pkg is None:  # the manifest became unreadable since the index was built
+                raise KeyError(name)
+            pkg.name = name
+            self._read[name] = pkg
+        return pkg
+
+    def __contains__(self, name: object) -> bool:
+        return name in self._dirs
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._dirs)
+
+    def __len__(self) -> int:
+        return len(self._dirs)
+
+
 class PackageIndex:
     def __init__(self, workspace_root: str, distro: str, prefixes: list[str]) -> None:
         self.workspace_root = _norm(workspace_root)
         self.install_root = self.workspace_root + "/install"
         self.distro = distro
         self.prefixes = prefixes
-        self.packages: dict[str, WorkspacePackage] = {}
+        self.packages = _Packages(self)
         self.installed: dict[str, str] = {}  # name -> prefix
         # package.xml files colcon would reject (path, message, line): the engine reports these
         self.problems: list[tuple[str, str, int]] = []
@@ -80,7 +118,7 @@ class PackageIndex:
         self._exists_cache: dict[str, bool] = {}
         self._installed_exes: dict[str, frozenset[str] | None] = {}
         self._installed_plugins: dict[str, frozenset[str] | None] = {}
-        self._by_dir: dict[str, WorkspacePackage] = {}  # source directory -> package
+        self._by_dir: dict[str, str] = {}  # source directory -> package name
 
     # ---- identity -------------------------------------------------------------------------------
 
@@ -199,13 +237,28 @@ class PackageIndex:
         # The deepest package directory holding it: walk up from the path (a dict lookup per
         # level, instead of a scan of every package per call: quadratic on 1,000 packages).
         while True:
-            pkg = self._by_dir.get(path)
-            if pkg is not None:
-                return pkg
+            name = self._by_dir.get(path)
+            if name is not None:
+                return self.packages.get(name)
             parent = posixpath.dirname(path)
             if parent == path or not parent:
                 return None
             path = parent
+
+    def read_packages_holding(self, paths: Iterable[str]) -> None:
+        """Read every package whose directory holds one of ``paths`` (their manifests' problems
+        are reported only then: the engine asks for those of the checked packages)."""
+        names = set()
+        for path in paths:
+            d = posixpath.dirname(_norm(path))
+            while d:
+                name = self._by_dir.get(d)
+                if name is not None:
+                    names.add(name)
+                parent = posixpath.dirname(d)
+                d = "" if parent == d else parent
+        for name in sorted(names):
+            self.packages.get(name)
 
     def locate(self, path: str) -> Located:
         """Where a path launch would open comes from (see module docstring)."""
@@ -482,15 +535,36 @@ def build_package_index(workspace_root: str, distro: str = "humble",
         _scoped_problems(index, pkg_dirs, scope)
         return index
     for pkg_dir in pkg_dirs:
-        pkg = _read_package(index, pkg_dir)
-        if pkg is None:
+        text = index.read_text(pkg_dir + "/package.xml")
+        name = _plain_name(text) if text is not None else None
+        pkg = None
+        if name is None:  # unreadable, or a name only catkin_pkg can tell: read it now
+            pkg = _read_package(index, pkg_dir)
+            if pkg is None:
+                continue
+            name = pkg.name
+        if name in index.packages:
+            if pkg is None:
+                _read_manifest(index, pkg_dir)  # its own problems, as when it is read
+            index.problems.append(_duplicate(pkg_dir + "/package.xml", name, index.packages.dir_of(name)))
             continue
-        if pkg.name in index.packages:
-            index.problems.append(_duplicate(pkg.package_xml, pkg.name, index.packages[pkg.name].path))
-            continue
-        index.packages[pkg.name] = pkg
-    index._by_dir = {p.path: p for p in index.packages.values()}
+        index.packages.add(name, pkg_dir, pkg)
+        index._by_dir[pkg_dir] = name
     return index
+
+
+def _plain_name(text: str) -> str | None:
+    """The package name ``_read_package`` gives this manifest whether or not catkin_pkg accepts
+    it, when the text leaves no doubt: one ``<name>`` element outside comments, plain text, that
+    the fallback pattern reads the same. Else None (then the package is read at once)."""
+    if "<![CDATA[" in text:
+        return None
+    found = _NAME_ELEMENT_RX.findall(_COMMENT_RX.sub("", text))
+    fallback = _NAME_RX.search(text)
+    if len(found) != 1 or fallback is None or any(c in found[0] for c in "&<\r"):
+        return None
+    name = found[0].strip(" \n\r\t")
+    return name if name and name == fallback.group(1) else None
 
 
 def _duplicate(package_xml: str, name: str, first_dir: str) -> tuple[str, str, int]:

@@ -28,6 +28,8 @@ def test_exec_depends_with_lines(idx):
 
 
 def test_broken_package_xml_is_a_problem_not_a_crash(idx, ws):
+    assert not any("broken_pkg" in p for p, _, _ in idx.problems)  # packages are read when asked for
+    idx.read_packages_holding([str(ws / "src/broken_pkg/launch/x.launch.py"), str(ws / "src/invalid_pkg/x")])
     probs = {os.path.basename(os.path.dirname(p)): (m, line) for p, m, line in idx.problems}
     assert "broken_pkg" in probs and "invalid xml" in probs["broken_pkg"][0].lower()
     assert probs["broken_pkg"][1] >= 1

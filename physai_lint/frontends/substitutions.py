@@ -43,7 +43,7 @@ from physai_lint.model.values import (
 # them. Where distros differ the union is accepted (this parser does not know the distro): "param"
 # takes an optional default since jazzy (launch_ros ``Parameter.parse``), humble takes one argument.
 ARITY: dict[str, tuple[int, int | None]] = {
-    "var": (1, 2), "env": (1, 2), "optenv": (1, 2), "find-pkg-share": (1, 1),
+    "var": (1, 2), "env": (1, 2), "find-pkg-share": (1, 1),
     "find-pkg-prefix": (1, 1), "find-exec": (1, 1), "exec-in-pkg": (2, 2), "dirname": (0, 0),
     "filename": (0, 0), "anon": (1, 1), "eval": (1, 2), "command": (1, 2), "not": (1, 1),
     "and": (2, 2), "or": (2, 2), "any": (1, None), "all": (1, None), "equals": (2, 2),
@@ -51,6 +51,11 @@ ARITY: dict[str, tuple[int, int | None]] = {
     "log_dir": (0, 0), "launch_log_dir": (0, 0),
 }
 SUBSTITUTION_NAMES: tuple[str, ...] = tuple(sorted(ARITY))
+# roslaunch (ROS 1) substitutions that ROS 2 launch does not expose (it fails with "Unknown
+# substitution"), with what replaces them.
+ROS1_SUBSTITUTIONS: dict[str, str] = {
+    "optenv": "$(env NAME DEFAULT)", "arg": "$(var NAME)", "find": "$(find-pkg-share PKG)",
+}
 # Substitutions missing from humble's expose registry: name -> first distro that has them.
 DISTRO_ONLY_SUBSTITUTIONS: dict[str, str] = {
     "any": "jazzy", "all": "jazzy", "equals": "jazzy", "not-equals": "jazzy", "if": "jazzy",
@@ -294,6 +299,8 @@ def _build(ctx: _Ctx, name: str, args: list[Value], start: int, end: int) -> Sub
     if arity is None:
         close = difflib.get_close_matches(name, SUBSTITUTION_NAMES, n=1)
         hint = f'did you mean "{close[0]}"? ' if close else ""
+        if name in ROS1_SUBSTITUTIONS:
+            hint = f"$({name} ...) is ROS 1 roslaunch; in ROS 2 write {ROS1_SUBSTITUTIONS[name]}. "
         ctx.diags.append(_diag(ctx, start, end, f'unknown substitution "{raw}"',
                                hint + "valid substitutions: " + ", ".join(SUBSTITUTION_NAMES),
                                name))
@@ -329,7 +336,6 @@ def _eval(args: list[Value], span: Span) -> Subst:
 _BUILDERS: dict[str, Callable[[list[Value], Span], Subst]] = {
     "var": lambda a, s: LaunchConfig(a[0], _opt(a, 1), s),
     "env": lambda a, s: EnvVar(a[0], _opt(a, 1), s),
-    "optenv": lambda a, s: EnvVar(a[0], _opt(a, 1), s, optional=True),
     "find-pkg-share": lambda a, s: FindPackage(a[0], "share", s),
     "find-pkg-prefix": lambda a, s: FindPackage(a[0], "prefix", s),
     "find-exec": lambda a, s: FindExecutable(a[0], s),

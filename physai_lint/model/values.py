@@ -29,12 +29,11 @@ class LaunchConfig:
 
 @dataclass(frozen=True, slots=True)
 class EnvVar:
-    """``EnvironmentVariable`` / ``$(env NAME [default])`` / ``$(optenv ...)`` (optional=True)."""
+    """``EnvironmentVariable`` / ``$(env NAME [default])``."""
 
     name: "Value"
     default: "Value | None"
     span: Span | None = None
-    optional: bool = False
 
 
 @dataclass(frozen=True, slots=True)

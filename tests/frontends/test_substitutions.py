@@ -90,7 +90,7 @@ def test_unescaped_lone_dollar_is_l007() -> None:
 
 
 @pytest.mark.parametrize("text, cls", [
-    ("$(env HOME)", EnvVar), ("$(optenv HOME /tmp)", EnvVar), ("$(find-pkg-prefix p)", FindPackage),
+    ("$(env HOME)", EnvVar), ("$(find-pkg-prefix p)", FindPackage),
     ("$(find-exec ls)", FindExecutable), ("$(exec-in-pkg talker demo)", ExecInPackage),
     ("$(dirname)", ThisFileDir), ("$(filename)", ThisFile), ("$(anon n)", Anon),
     ("$(command 'ls -l')", Command), ("$(command ls warn)", Command), ("$(not a)", BoolOp),
@@ -131,9 +131,13 @@ def test_if_without_else_value_evaluates_to_empty_when_false(demo_graph) -> None
     assert set(demo_graph(files, "launch/a.launch.xml", suffix="true")) == {"talker_on"}
 
 
-def test_optenv_is_optional() -> None:
-    value, _ = parse("$(optenv X)")
-    assert isinstance(value[0], EnvVar) and value[0].optional
+@pytest.mark.parametrize("text, instead", [("$(optenv X /tmp)", "$(env NAME DEFAULT)"),
+                                           ("$(arg robot)", "$(var NAME)"), ("$(find pkg)", "$(find-pkg-share PKG)")])
+def test_ros1_substitutions_are_unknown_with_the_ros2_spelling(text: str, instead: str) -> None:
+    # ros2/launch exposes no optenv/arg/find: launch fails with "Unknown substitution"
+    value, diags = parse(text)
+    assert [d.code for d in diags] == ["L007"] and isinstance(value[0], Unknown)
+    assert "ROS 1" in (diags[0].help or "") and instead in (diags[0].help or "")
 
 
 def test_unknown_substitution_with_did_you_mean() -> None:

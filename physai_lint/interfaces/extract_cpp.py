@@ -37,149 +37,237 @@ class Tok(NamedTuple):
 _ID_START_CHARS = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz_")
 _BLANKS = re.compile(r"[ \t\r\f\v\\]+")
 _ID = re.compile(r"[A-Za-z_0-9]*")
-_NUM = re.compile(r"(?:0[xX][0-9a-fA-F']+|[0-9][0-9']*\.?[0-9']*(?:[eE][+-]?[0-9]+)?|\.[0-9]+(?:[eE][+-]?[0-9]+)?)[uUlLfF]*")
+_NUM_PATTERN = (r"(?:0[xX][0-9a-fA-F']+|[0-9][0-9']*\.?[0-9']*(?:[eE][+-]?[0-9]+)?"
+                r"|\.[0-9]+(?:[eE][+-]?[0-9]+)?)[uUlLfF]*")
+_NUM = re.compile(_NUM_PATTERN)
 _STR_PREFIX = ("u8R", "uR", "UR", "LR", "R", "u8", "u", "U", "L")
+_DEFINE = re.compile(r'#\s*define\s+([A-Za-z_]\w*)\s+"((?:[^"\\]|\\.)*)"\s*$')
+_RAW_DELIM = re.compile(r'"([^()\\ \t\n]{0,16})\(')
+
+# One token per match, after any blanks (a backslash counts as one: line continuations); the
+# group that matched says what it is. Identifiers that cannot start a string literal, and
+# operators, come first: they are most tokens, and each alternative tried before the one that
+# matches costs time (a third of the scan). Otherwise the order is the order the old loop decided
+# in: a comment before "/", a string prefix before an identifier.
+_SCAN = re.compile(
+    r"[ \t\r\f\v\\]*(?:"
+    r"([A-KM-QSTV-Za-tv-z_][A-Za-z_0-9]*)"               # 1 identifier, not u U L R...
+    r"|(::|->|[!$%&()*+,\-:;<=>?@\[\]^`{|}~]"            # 2 operator ("." before a digit: 11,
+    r"|\.(?![0-9\x80-\U0010ffff])|/(?![/*]))"            #   before non-ASCII: 12; "//", "/*")
+    r"|(\n[\n \t\r\f\v\\]*)"                              # 3 newlines, and the blanks after them
+    r"|(//[^\n]*)"                                       # 4 line comment (up to the newline)
+    r"|(/\*(?:[^*]*\*+(?:[^/*][^*]*\*+)*/|[\s\S]*))"     # 5 block comment; unterminated: all
+    r"|(\#)"                                             # 6 preprocessor line, or a plain "#"
+    r'|((?:u8|[uUL])?R")'                                # 7 raw string
+    r'|((?:u8|[uUL])?"(?:[^"\\\n]+|\\[\s\S]?)*["\n]?)'  # 8 string, ends at " or newline
+    r"|('(?:[^'\\\n]+|\\[\s\S]?)*['\n]?)"                # 9 char, ends at ' or newline
+    r"|([A-Za-z_][A-Za-z_0-9]*)"                         # 10 identifier
+    r"|(" + _NUM_PATTERN + r")"                          # 11 number
+    r"|([^ \t\r\f\v\\])"                                 # 12 anything else: non-ASCII, control
+    r")")
+# the token kind of the groups that need nothing but their text and position
+_SIMPLE_KIND = (None, "id", "op", None, None, None, None, None, None, None, "id", "num", None)
 
 
 _new = tuple.__new__  # Tok(...) without NamedTuple's Python-level __new__: a third of tokenizing
 
 
 def tokenize(text: str) -> list[Tok]:
+    """Tokens of a C++ source (its first ``MAX_SOURCE`` characters).
+
+    One compiled regex does the common tokens; ``_step`` (the per-character loop this replaced,
+    one token at a time) does the rare ones: preprocessor lines, raw strings, non-ASCII, an
+    unterminated string or char at the end, and a whole source cut at ``MAX_SOURCE`` (that loop
+    looked past the cut). Lines are counted as that loop counted them: a newline inside a char
+    literal, or ending one, is not counted."""
     toks: list[Tok] = []
-    i, n = 0, min(len(text), MAX_SOURCE)
+    n = len(text)
     line, line_start = 1, 0
+    if n > MAX_SOURCE:
+        n, i = MAX_SOURCE, 0
+        while i < n:
+            i, line, line_start = _step(text, i, n, line, line_start, toks)
+        return toks
+    append, new, tok, simple = toks.append, _new, Tok, _SIMPLE_KIND
+    finditer, count, rfind = _SCAN.finditer, text.count, text.rfind
+    i = 0
+    while i < n:
+        ls1 = line_start - 1  # col = offset - ls1
+        for m in finditer(text, i):
+            k: int = m.lastindex  # type: ignore[assignment]  # every alternative is a group
+            kind = simple[k]
+            if kind:  # identifier, operator, number
+                t = m.group(k)
+                e = m.end()
+                append(new(tok, (kind, t, line, e - len(t) - ls1, line, e - ls1)))
+            elif k == 3:  # newlines
+                t = m.group(3)
+                line += t.count("\n")
+                ls1 = m.end() - len(t) + t.rfind("\n")
+                line_start = ls1 + 1
+            elif k == 8:  # string
+                s, e = m.span(8)
+                if e == n:  # maybe unterminated: the old loop knows
+                    i, line, line_start = _step(text, s, n, line, line_start, toks)
+                    break
+                q = s if text[s] == '"' else text.index('"', s)
+                body = text[q + 1:e - 1]  # without the closing quote or newline
+                if "\\" in body:
+                    body = _unescape(body)
+                sl, sc = line, s - ls1
+                nl = count("\n", s, e)
+                if nl:
+                    line += nl
+                    line_start = rfind("\n", s, e) + 1
+                    ls1 = line_start - 1
+                if toks and toks[-1][0] == "str" and toks[-1][4] > 0:  # adjacent literals concatenate
+                    prev = toks.pop()
+                    append(new(tok, ("str", prev[1] + body, prev[2], prev[3], line, e - ls1)))
+                else:
+                    append(new(tok, ("str", body, sl, sc, line, e - ls1)))
+            elif k == 9:  # char: a newline in it or ending it is not counted
+                s, e = m.span(9)
+                if e == n:  # maybe unterminated (after a lone backslash at the end the old loop
+                    # stopped one past the end)
+                    i, line, line_start = _step(text, s, n, line, line_start, toks)
+                    break
+                append(new(tok, ("char", text[s + 1:e - 1], line, s - ls1, line, e - ls1)))
+            elif k == 5:  # block comment
+                s, e = m.span(5)
+                nl = count("\n", s, e)
+                if nl:
+                    line += nl
+                    line_start = rfind("\n", s, e) + 1
+                    ls1 = line_start - 1
+            elif k != 4:  # not a line comment: "#", raw string, anything else; the old loop does them
+                i, line, line_start = _step(text, m.start(k), n, line, line_start, toks)
+                break
+        else:
+            break
+    return toks
+
+
+def _step(text: str, i: int, n: int, line: int, line_start: int,
+          toks: list[Tok]) -> tuple[int, int, int]:
+    """One token (or blanks, newline, comment, preprocessor line) from offset ``i``, exactly as
+    ``tokenize``'s old character loop did: one pass of that loop's body. Returns the new
+    ``i, line, line_start``."""
 
     def pos(k: int) -> tuple[int, int]:
         return line, k - line_start + 1
 
-    while i < n:
-        c = text[i]
-        if c == "\n":
-            line += 1
-            line_start = i + 1
-            i += 1
-            continue
-        if c in " \t\r\f\v\\":
-            i = _BLANKS.match(text, i).end()  # type: ignore[union-attr]
-            continue
-        if c == "/" and text.startswith("//", i):
-            j = text.find("\n", i)
-            i = n if j < 0 else j
-            continue
-        if c == "/" and text.startswith("/*", i):
-            j = text.find("*/", i + 2)
-            j = n if j < 0 else j + 2
-            line += text.count("\n", i, j)
-            k = text.rfind("\n", i, j)
-            if k >= 0:
-                line_start = k + 1
-            i = j
-            continue
-        if c == "#" and text[line_start:i].strip() == "":
-            # preprocessor line: keep #define NAME "literal" as tokens, skip the rest
-            j = i
-            while True:
-                k = text.find("\n", j)
-                if k < 0:
-                    k = n
-                    break
-                if text[k - 1:k] == "\\":
-                    j = k + 1
-                    continue
+    c = text[i]
+    if c == "\n":
+        return i + 1, line + 1, i + 1
+    if c in " \t\r\f\v\\":
+        return _BLANKS.match(text, i).end(), line, line_start  # type: ignore[union-attr]
+    if c == "/" and text.startswith("//", i):
+        j = text.find("\n", i)
+        return (n if j < 0 else j), line, line_start
+    if c == "/" and text.startswith("/*", i):
+        j = text.find("*/", i + 2)
+        j = n if j < 0 else j + 2
+        line += text.count("\n", i, j)
+        k = text.rfind("\n", i, j)
+        if k >= 0:
+            line_start = k + 1
+        return j, line, line_start
+    if c == "#" and text[line_start:i].strip() == "":
+        # preprocessor line: keep #define NAME "literal" as tokens, skip the rest
+        j = i
+        while True:
+            k = text.find("\n", j)
+            if k < 0:
+                k = n
                 break
-            directive = text[i:k]
-            m = re.match(r'#\s*define\s+([A-Za-z_]\w*)\s+"((?:[^"\\]|\\.)*)"\s*$', directive)
-            if m:
-                sl, sc = pos(i)
-                toks.append(_new(Tok, ("op", "#define", sl, sc, sl, sc + 1)))
-                toks.append(_new(Tok, ("id", m.group(1), sl, sc, sl, sc + 1)))
-                toks.append(_new(Tok, ("str", _unescape(m.group(2)), sl, sc, sl, sc + 1)))
-                toks.append(_new(Tok, ("op", ";", sl, sc, sl, sc + 1)))
-            line += text.count("\n", i, k)
-            kk = text.rfind("\n", i, k)
-            if kk >= 0:
-                line_start = kk + 1
-            i = k
-            continue
-        # string literals, with prefixes and raw strings
-        prefix = ""
-        is_id = c in _ID_START_CHARS
-        if is_id and c in "uULR":
-            for p in _STR_PREFIX:
-                if text.startswith(p, i) and i + len(p) < n and text[i + len(p)] == '"':
-                    prefix = p
-                    break
-        if c == '"' or prefix:
-            start = i
-            sl, sc = pos(start)
-            i += len(prefix)
-            if prefix.endswith("R"):
-                m = re.match(r'"([^()\\ \t\n]{0,16})\(', text[i:i + 20])
-                if not m:
-                    i += 1
-                    continue
-                delim = ")" + m.group(1) + '"'
-                body_start = i + m.end()
-                j = text.find(delim, body_start)
-                j = n if j < 0 else j
-                body = text[body_start:j]
-                end = min(n, j + len(delim))
-            else:
-                j = i + 1
-                buf = []
-                while j < n and text[j] != '"' and text[j] != "\n":
-                    if text[j] == "\\" and j + 1 < n:
-                        buf.append(text[j:j + 2])
-                        j += 2
-                        continue
-                    buf.append(text[j])
-                    j += 1
-                body = _unescape("".join(buf))
-                end = min(n, j + 1)
-            line += text.count("\n", start, end)
-            k = text.rfind("\n", start, end)
-            if k >= 0:
-                line_start = k + 1
-            el, ec = pos(end)
-            # adjacent literals concatenate
-            if toks and toks[-1].kind == "str" and toks[-1].end_line > 0:
-                prev = toks.pop()
-                toks.append(_new(Tok, ("str", prev.text + body, prev.line, prev.col, el, ec)))
-            else:
-                toks.append(_new(Tok, ("str", body, sl, sc, el, ec)))
-            i = end
-            continue
-        if c == "'":
+            if text[k - 1:k] == "\\":
+                j = k + 1
+                continue
+            break
+        m = _DEFINE.match(text[i:k])
+        if m:
+            sl, sc = pos(i)
+            toks.append(_new(Tok, ("op", "#define", sl, sc, sl, sc + 1)))
+            toks.append(_new(Tok, ("id", m.group(1), sl, sc, sl, sc + 1)))
+            toks.append(_new(Tok, ("str", _unescape(m.group(2)), sl, sc, sl, sc + 1)))
+            toks.append(_new(Tok, ("op", ";", sl, sc, sl, sc + 1)))
+        line += text.count("\n", i, k)
+        kk = text.rfind("\n", i, k)
+        if kk >= 0:
+            line_start = kk + 1
+        return k, line, line_start
+    # string literals, with prefixes and raw strings
+    prefix = ""
+    is_id = c in _ID_START_CHARS
+    if is_id and c in "uULR":
+        for p in _STR_PREFIX:
+            if text.startswith(p, i) and i + len(p) < n and text[i + len(p)] == '"':
+                prefix = p
+                break
+    if c == '"' or prefix:
+        start = i
+        sl, sc = pos(start)
+        i += len(prefix)
+        if prefix.endswith("R"):
+            m = _RAW_DELIM.match(text[i:i + 20])
+            if not m:
+                return i + 1, line, line_start
+            delim = ")" + m.group(1) + '"'
+            body_start = i + m.end()
+            j = text.find(delim, body_start)
+            j = n if j < 0 else j
+            body = text[body_start:j]
+            end = min(n, j + len(delim))
+        else:
             j = i + 1
-            while j < n and text[j] != "'" and text[j] != "\n":
-                j += 2 if text[j] == "\\" else 1
-            sl, sc = pos(i)
-            toks.append(_new(Tok, ("char", text[i + 1:j], sl, sc, sl, sc + (j - i + 1))))
-            i = j + 1
-            continue
-        if is_id:
-            m = _ID.match(text, i + 1)
-            j = m.end() if m else i + 1
-            sl, sc = pos(i)
-            toks.append(_new(Tok, ("id", text[i:j], sl, sc, sl, sc + (j - i))))
-            i = j
-            continue
-        if c.isdigit() or (c == "." and i + 1 < n and text[i + 1].isdigit()):
-            m = _NUM.match(text, i)
-            j = m.end() if m and m.end() > i else i + 1
-            sl, sc = pos(i)
-            toks.append(_new(Tok, ("num", text[i:j], sl, sc, sl, sc + (j - i))))
-            i = j
-            continue
-        two = text[i:i + 2]
+            buf = []
+            while j < n and text[j] != '"' and text[j] != "\n":
+                if text[j] == "\\" and j + 1 < n:
+                    buf.append(text[j:j + 2])
+                    j += 2
+                    continue
+                buf.append(text[j])
+                j += 1
+            body = _unescape("".join(buf))
+            end = min(n, j + 1)
+        line += text.count("\n", start, end)
+        k = text.rfind("\n", start, end)
+        if k >= 0:
+            line_start = k + 1
+        el, ec = pos(end)
+        # adjacent literals concatenate
+        if toks and toks[-1][0] == "str" and toks[-1][4] > 0:
+            prev = toks.pop()
+            toks.append(_new(Tok, ("str", prev[1] + body, prev[2], prev[3], el, ec)))
+        else:
+            toks.append(_new(Tok, ("str", body, sl, sc, el, ec)))
+        return end, line, line_start
+    if c == "'":
+        j = i + 1
+        while j < n and text[j] != "'" and text[j] != "\n":
+            j += 2 if text[j] == "\\" else 1
         sl, sc = pos(i)
-        if two in ("::", "->"):
-            toks.append(_new(Tok, ("op", two, sl, sc, sl, sc + 2)))
-            i += 2
-            continue
-        toks.append(_new(Tok, ("op", c, sl, sc, sl, sc + 1)))
-        i += 1
-    return toks
+        toks.append(_new(Tok, ("char", text[i + 1:j], sl, sc, sl, sc + (j - i + 1))))
+        return j + 1, line, line_start
+    if is_id:
+        m = _ID.match(text, i + 1)
+        j = m.end() if m else i + 1
+        sl, sc = pos(i)
+        toks.append(_new(Tok, ("id", text[i:j], sl, sc, sl, sc + (j - i))))
+        return j, line, line_start
+    if c.isdigit() or (c == "." and i + 1 < n and text[i + 1].isdigit()):
+        m = _NUM.match(text, i)
+        j = m.end() if m and m.end() > i else i + 1
+        sl, sc = pos(i)
+        toks.append(_new(Tok, ("num", text[i:j], sl, sc, sl, sc + (j - i))))
+        return j, line, line_start
+    two = text[i:i + 2]
+    sl, sc = pos(i)
+    if two in ("::", "->"):
+        toks.append(_new(Tok, ("op", two, sl, sc, sl, sc + 2)))
+        return i + 2, line, line_start
+    toks.append(_new(Tok, ("op", c, sl, sc, sl, sc + 1)))
+    return i + 1, line, line_start
 
 
 def _unescape(s: str) -> str:

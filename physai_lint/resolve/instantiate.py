@@ -130,7 +130,9 @@ class Instantiator:
         active = outer.active
         if a.condition is not None:
             active = combine(active, self.ev.condition(a.condition.kind, a.condition.value, scope))
-        self.frame = replace(outer, active=active)
+        # Frames are never mutated: an action that changes nothing keeps its parent's frame (most
+        # do; a dataclasses.replace per action was a tenth of resolving a large workspace).
+        self.frame = outer if active is outer.active else replace(outer, active=active)
         key = f"{outer.file}#{a.id}"
         prev = self.visited.get(key, False)
         self.visited[key] = True if (prev is True or self.frame.active is True) else (

@@ -119,6 +119,7 @@ class PackageIndex:
         self._installed_exes: dict[str, frozenset[str] | None] = {}
         self._installed_plugins: dict[str, frozenset[str] | None] = {}
         self._by_dir: dict[str, str] = {}  # source directory -> package name
+        self._located: dict[str, Located] = {}
 
     # ---- identity -------------------------------------------------------------------------------
 
@@ -261,8 +262,15 @@ class PackageIndex:
             self.packages.get(name)
 
     def locate(self, path: str) -> Located:
-        """Where a path launch would open comes from (see module docstring)."""
-        path = _norm(path)
+        """Where a path launch would open comes from (see module docstring). Memoised: every node
+        of a large workspace asks for its parameter files, and the answer is a walk over install
+        rules."""
+        found = self._located.get(path)
+        if found is None:
+            found = self._located[path] = self._locate(_norm(path))
+        return found
+
+    def _locate(self, path: str) -> Located:
         # 1. the virtual install space of a workspace package
         if path.startswith(self.install_root + "/"):
             rest = path[len(self.install_root) + 1 :]

@@ -138,10 +138,10 @@ def to_networkx(g: SystemGraph) -> Any:
 
 
 def similar(name: str, candidates: Iterable[str], cutoff: float = 0.6) -> list[str]:
-    import difflib
+    from physai_lint.closematch import close_matches
 
     pool = sorted(set(candidates) - {name})
-    close = difflib.get_close_matches(name, pool, n=3, cutoff=cutoff)
+    close = list(close_matches(name, tuple(pool), 3, cutoff))
     base = name.rsplit("/", 1)[-1]
     by_base = [c for c in pool if c.rsplit("/", 1)[-1] == base and c not in close]
     return (close + by_base)[:3]

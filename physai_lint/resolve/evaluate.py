@@ -83,6 +83,11 @@ class Evaluator:
         # launch configurations looked up so far: a value whose evaluation moves it depends on one
         self.config_lookups = 0
 
+    def eval_noting_configs(self, value: v.Value | None, scope: Scope) -> tuple[str | None, bool]:
+        """(``eval``, whether it looked up a launch configuration: ``$(var model)_description``)."""
+        before = self.config_lookups
+        return self.eval(value, scope), self.config_lookups != before
+
     def eval(self, value: v.Value | None, scope: Scope) -> str | None:
         if value is None:
             return None
@@ -118,10 +123,9 @@ class Evaluator:
             return f if isinstance(f, str) else None
         if isinstance(p, v.ExecInPackage):
             exe = self.eval(p.executable, scope)
-            before = self.config_lookups
-            pkg = self.eval(p.package, scope)
+            pkg, from_config = self.eval_noting_configs(p.package, scope)
             if pkg is not None and self.on_package:
-                self.on_package(pkg, p.span, self.config_lookups != before)
+                self.on_package(pkg, p.span, from_config)
             prefix = self.packages.prefix_dir(pkg) if (self.packages and pkg) else None
             return posixpath.join(prefix, "lib", pkg or "", exe) if (prefix and exe and pkg) else None
         if isinstance(p, v.PythonExpr):
@@ -185,12 +189,11 @@ class Evaluator:
         return None
 
     def _find_package(self, p: v.FindPackage, scope: Scope) -> str | None:
-        before = self.config_lookups
-        pkg = self.eval(p.package, scope)
+        pkg, from_config = self.eval_noting_configs(p.package, scope)
         if pkg is None:
             return None
         if self.on_package:
-            self.on_package(pkg, p.span, self.config_lookups != before)
+            self.on_package(pkg, p.span, from_config)
         if self.packages is None:
             return None
         if p.kind == "share":

@@ -50,12 +50,6 @@ class NodeBuilder:
             return None, False
         return self.inst.ev.eval(value, scope), True
 
-    def _package(self, value: v.Value | None, scope: Scope) -> tuple[str | None, bool]:
-        """(package, whether its name came from a launch configuration, e.g. ``$(var pkg)``)."""
-        before = self.inst.ev.config_lookups
-        package, _ = self._eval(value, scope)
-        return package, self.inst.ev.config_lookups != before
-
     def _namespace(self, raw: str | None, given: bool, scope: Scope) -> tuple[str | None, bool]:
         """(absolute namespace or None when unknown, whether launch specifies one)."""
         if (given and raw is None) or (NS in scope.configs and scope.configs[NS] is None):
@@ -159,7 +153,7 @@ class NodeBuilder:
     # ---- actions ------------------------------------------------------------------------------
     def node(self, a: ir.NodeAction, scope: Scope) -> None:
         fr = self.inst.frame
-        package, package_from_config = self._package(a.package, scope)
+        package, package_from_config = self.inst.ev.eval_noting_configs(a.package, scope)
         executable, _ = self._eval(a.executable, scope)
         name, name_given = self._eval(a.name, scope)
         ns_raw, ns_given = self._eval(a.namespace, scope)
@@ -201,7 +195,7 @@ class NodeBuilder:
 
             cond = self.inst.ev.condition(cn.condition.kind, cn.condition.value, scope)
             active = combine(active, cond)
-        package, package_from_config = self._package(cn.package, scope)
+        package, package_from_config = self.inst.ev.eval_noting_configs(cn.package, scope)
         plugin, _ = self._eval(cn.plugin, scope)
         name, name_given = self._eval(cn.name, scope)
         ns_raw, ns_given = self._eval(cn.namespace, scope)

@@ -234,30 +234,23 @@ class PackageIndex:
 
     def package_of_source(self, path: str) -> WorkspacePackage | None:
         """The workspace package whose source directory holds ``path``."""
-        path = _norm(path)
-        # The deepest package directory holding it: walk up from the path (a dict lookup per
-        # level, instead of a scan of every package per call: quadratic on 1,000 packages).
-        while True:
+        name = next(self._names_holding(_norm(path)), None)
+        return None if name is None else self.packages.get(name)
+
+    def _names_holding(self, path: str) -> Iterator[str]:
+        """The packages whose directories hold ``path``, deepest first: a walk up the path (a
+        dict lookup per level, instead of a scan of every package per call)."""
+        while path:
             name = self._by_dir.get(path)
             if name is not None:
-                return self.packages.get(name)
+                yield name
             parent = posixpath.dirname(path)
-            if parent == path or not parent:
-                return None
-            path = parent
+            path = "" if parent == path else parent
 
     def read_packages_holding(self, paths: Iterable[str]) -> None:
         """Read every package whose directory holds one of ``paths`` (their manifests' problems
         are reported only then: the engine asks for those of the checked packages)."""
-        names = set()
-        for path in paths:
-            d = posixpath.dirname(_norm(path))
-            while d:
-                name = self._by_dir.get(d)
-                if name is not None:
-                    names.add(name)
-                parent = posixpath.dirname(d)
-                d = "" if parent == d else parent
+        names = {name for path in paths for name in self._names_holding(posixpath.dirname(_norm(path)))}
         for name in sorted(names):
             self.packages.get(name)
 

@@ -116,14 +116,13 @@ def build_project(opts: CheckOptions, cwd: str | None = None, progress: Any = No
     leaves = {p for p in launch_files if not _has_include(loader(p))}
     by_entry = {p: resolve(p) for p in launch_files if p not in leaves}
     included = {f for r in by_entry.values() for f in r.files[1:] if f != r.entry}
-    skipped = sorted(leaves & included)
     by_entry.update((p, resolve(p)) for p in sorted(leaves - included))
-    progress.advance(len(skipped))
-    results = [by_entry[p] for p in launch_files if p in by_entry]
-    launches = [r for r in results if r.entry not in included]
+    launches = [by_entry[p] for p in launch_files if p in by_entry and p not in included]
     if not launches:  # every file is included by another (include cycles): all of them are roots
-        by_entry.update((p, resolve(p)) for p in skipped)
+        by_entry.update((p, resolve(p)) for p in sorted(leaves & included))
         launches = [by_entry[p] for p in launch_files]
+    else:
+        progress.advance(len(leaves & included))
     targets = set(paths) | set(found.launch_files) | set(found.param_files)
     for r in launches:
         if r.entry in explicit or any(r.entry.startswith(p.rstrip("/") + "/") for p in paths) or \

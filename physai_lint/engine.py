@@ -69,6 +69,7 @@ def build_project(opts: CheckOptions, cwd: str | None = None, progress: Any = No
     """Discover, parse and resolve: the model that every subcommand reads."""
     from physai_lint import workspace as ws
     from physai_lint.resolve.instantiate import resolve_launch
+    from physai_lint.resolve.roots import choose_roots
 
     cwd = (cwd or os.getcwd()).replace(os.sep, "/")
     if opts.distro not in ws.DISTROS:
@@ -108,21 +109,7 @@ def build_project(opts: CheckOptions, cwd: str | None = None, progress: Any = No
                               explicit_entry=entry in explicit)
 
     progress.stage("resolving", len(launch_files))
-    # A file that another analysed file includes is analysed through its includer (which gives it
-    # its real arguments and namespace), not on its own; a file nobody includes is a root.
-    # A file without an include action can only be a root or dropped, and adds nothing to what
-    # is included: so includers go first, and such a file that one of them includes is never
-    # resolved on its own (a third of the entries of a large workspace).
-    leaves = {p for p in launch_files if not _has_include(loader(p))}
-    by_entry = {p: resolve(p) for p in launch_files if p not in leaves}
-    included = {f for r in by_entry.values() for f in r.files[1:] if f != r.entry}
-    by_entry.update((p, resolve(p)) for p in sorted(leaves - included))
-    launches = [by_entry[p] for p in launch_files if p in by_entry and p not in included]
-    if not launches:  # every file is included by another (include cycles): all of them are roots
-        by_entry.update((p, resolve(p)) for p in sorted(leaves & included))
-        launches = [by_entry[p] for p in launch_files]
-    else:
-        progress.advance(len(leaves & included))
+    launches = choose_roots(launch_files, loader, resolve, progress.advance)
     targets = set(paths) | set(found.launch_files) | set(found.param_files)
     for r in launches:
         if r.entry in explicit or any(r.entry.startswith(p.rstrip("/") + "/") for p in paths) or \
@@ -143,19 +130,6 @@ def build_project(opts: CheckOptions, cwd: str | None = None, progress: Any = No
         diagnostics.extend(r.diagnostics)
     return Project(cwd, root, store, packages, launches, [r.entry for r in launches], param_models,
                    interfaces, frozenset(targets), diagnostics)
-
-
-def _has_include(lf: Any) -> bool:
-    """Whether a parsed launch file has an include action anywhere (in groups, timers, handlers)."""
-    from physai_lint.model import launch as ir
-
-    stack = list(lf.actions) if lf is not None else []
-    while stack:
-        action = stack.pop()
-        if isinstance(action, ir.Include):
-            return True
-        stack.extend(getattr(action, "actions", ()))
-    return False
 
 
 def _param_sources(r: Any) -> set[str]:

@@ -41,13 +41,33 @@ class SystemGraph:
     endpoints: list[Endpoint] = field(default_factory=list)
     known: set[str] = field(default_factory=set)  # node ids whose interface is known
     nx: Any = None
+    _by_node: Any = field(default=None, init=False, repr=False, compare=False)
+    _nodes: Any = field(default=None, init=False, repr=False, compare=False)
 
     # ---- queries --------------------------------------------------------------------------------
+    # The rules ask these once per node and per remap: indexes built on first use (and again if
+    # endpoints were added since) instead of a scan of every endpoint per question.
+    def _index(self) -> dict[str, list[Endpoint]]:
+        cached = self._by_node
+        if cached is not None and cached[0] == len(self.endpoints):
+            return cached[1]  # type: ignore[no-any-return]
+        by_node: dict[str, list[Endpoint]] = {}
+        for e in self.endpoints:
+            by_node.setdefault(e.node, []).append(e)
+        self._by_node = (len(self.endpoints), by_node)
+        return by_node
+
     def node(self, node_id: str) -> NodeInstance:
-        for n in self.launch.nodes:
-            if n.id == node_id:
-                return n
-        raise KeyError(node_id)
+        nodes = self._nodes
+        if nodes is None or nodes[0] != len(self.launch.nodes):
+            table: dict[str, NodeInstance] = {}
+            for n in self.launch.nodes:
+                table.setdefault(n.id, n)  # the first node with the id, as a scan finds it
+            nodes = self._nodes = (len(self.launch.nodes), table)
+        try:
+            return nodes[1][node_id]  # type: ignore[no-any-return]
+        except KeyError:
+            raise KeyError(node_id) from None
 
     def of_kind(self, kind: EndpointKind, name: str | None = None) -> list[Endpoint]:
         return [e for e in self.endpoints if e.kind == kind and (name is None or e.resolved == name)]
@@ -57,10 +77,10 @@ class SystemGraph:
                        if e.resolved and e.kind in ("publisher", "subscriber")})
 
     def endpoints_of(self, node_id: str) -> list[Endpoint]:
-        return [e for e in self.endpoints if e.node == node_id]
+        return list(self._index().get(node_id, ()))
 
     def remap_used(self, node_id: str, index: int) -> bool:
-        return any(e.node == node_id and e.remap == index for e in self.endpoints)
+        return any(e.remap == index for e in self._index().get(node_id, ()))
 
     def has_unknown_endpoints(self) -> bool:
         """True when some active node's interface is unknown or a name could not be resolved."""

@@ -91,19 +91,32 @@ def missing_file(ctx: CheckContext) -> Iterator[Diagnostic]:
 
 
 def _collect_commands(obj: Any, out: list[Command], depth: int = 0) -> None:
-    if depth > 60 or obj is None or isinstance(obj, (str, int, float, bool, bytes)):
+    if depth > 60 or obj is None or type(obj) in _ATOMS:
         return
     if isinstance(obj, (tuple, list)):
         for item in obj:
-            _collect_commands(item, out, depth + 1)
+            if type(item) not in _ATOMS:
+                _collect_commands(item, out, depth + 1)
         return
     if isinstance(obj, Command):
         out.append(obj)
         return
-    if dataclasses.is_dataclass(obj):
-        for f in dataclasses.fields(obj):
-            if f.name not in ("span", "name_span", "field_spans"):
-                _collect_commands(getattr(obj, f.name), out, depth + 1)
+    kind = type(obj)
+    names = _FIELDS.get(kind)
+    if names is None:
+        names = _FIELDS[kind] = tuple(
+            f.name for f in dataclasses.fields(obj) if f.name not in ("span", "name_span", "field_spans")
+        ) if dataclasses.is_dataclass(obj) else ()
+    for name in names:
+        child = getattr(obj, name)
+        if type(child) not in _ATOMS:
+            _collect_commands(child, out, depth + 1)
+
+
+# Values that hold no Command, and the fields to walk of each dataclass type (fields() per object
+# was half the cost of walking every launch file).
+_ATOMS = frozenset({str, int, float, bool, bytes, type(None)})
+_FIELDS: dict[type, tuple[str, ...]] = {}
 
 
 def _known_share_path(ctx: CheckContext, join: PathJoin) -> tuple[str, str] | None:

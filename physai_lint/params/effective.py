@@ -123,6 +123,22 @@ def _dict_desc(prm: ResolvedParam) -> str:
     return f"launch parameter \"{prm.name}\""
 
 
+def _ops_by_node_key(model: ParamFileModel) -> list[tuple[str, list[tuple]]]:
+    """``model.ops`` cut where a node key starts (rcl's state per key is changed only by the ops
+    after that key's ``node`` op; ops before any key change nothing); made once per ops list."""
+    got = model.op_segments
+    if got is not None and got[0] is model.ops:
+        return got[1]  # type: ignore[no-any-return]
+    segments: list[tuple[str, list[tuple]]] = []
+    for op in model.ops:
+        if op[0] == "node":
+            segments.append((op[1], [op]))
+        elif segments:
+            segments[-1][1].append(op)
+    model.op_segments = (model.ops, segments)
+    return segments
+
+
 def effective_parameters(node_fqn: str | None, sources: list[ParamSourceR],
                          files: Mapping[str, ParamFileModel], composable: bool = False,
                          distro: str = "humble") -> dict[str, EffectiveParam]:
@@ -138,7 +154,14 @@ def effective_parameters(node_fqn: str | None, sources: list[ParamSourceR],
             if model is None:
                 uncertain = True
                 continue
-            rcl.apply(model.ops, model.path)
+            if node_fqn is None:
+                rcl.apply(model.ops, model.path)
+            else:
+                # Only the blocks keyed to this node can change what is read for it below: replay
+                # those (a nav2_params.yaml has ~50 node keys, each server matches one or two).
+                for key, ops in _ops_by_node_key(model):
+                    if key_matches(key, node_fqn):
+                        rcl.apply(ops, model.path)
         elif isinstance(src, ResolvedParamDict):
             _feed_dict(rcl, src, distro)
         elif isinstance(src, UnknownParams):

@@ -74,6 +74,8 @@ class ParamFileModel:
     ok: bool = True  # rcl would parse it (no X001/P104/P106 error)
     has_ros_parameters: bool = False
     distro: str = "humble"
+    # (ops, ops cut per node key): params.effective's memo, made again when ``ops`` is replaced
+    op_segments: Any = field(default=None, repr=False, compare=False)
 
     def params_named(self, name: str) -> list[tuple[NodeBlock, FileParam]]:
         return [(b, p) for b in self.blocks for p in b.params if p.name == name]

@@ -142,3 +142,45 @@ def test_composable_rules():
     eff = effective_parameters("/front/rectify", [_src("/c.yaml"), _src("/g.yaml")],
                                {"/c.yaml": f, "/g.yaml": g}, composable=True)
     assert eff["q"].value == 3  # last one wins across sources
+
+
+_MANY_KEYS = """\
+/**:
+  ros__parameters:
+    use_sim_time: false
+    rate: 1
+/ns/node:
+  ros__parameters:
+    rate: 2
+    gains: [1, 2.5]
+node:
+  ros__parameters:
+    rate: 3
+/ns/*:
+  ros__parameters:
+    mode: "a"
+/**/node:
+  ros__parameters:
+    rate: 4
+    mode: b
+/ns/node:
+  ros__parameters:
+    extra: true
+/other:
+  ros__parameters:
+    rate: 5
+"""
+
+
+@pytest.mark.parametrize("fqn", ["/ns/node", "/node", "/other", "/ns/x", "/deep/ns/node", None])
+def test_replaying_only_matching_keys_equals_replaying_the_whole_file(fqn, monkeypatch):
+    import physai_lint.params.effective as eff
+
+    files = {"/a.yaml": _file("/a.yaml", _MANY_KEYS), "/b.yaml": _file("/b.yaml", _MANY_KEYS.replace("rate: 2", "rate: 7"))}
+    dict_src = ResolvedParamDict((ResolvedParam("rate", 9, S),), S, "node")
+    sources = [_src("/a.yaml"), dict_src, _src("/b.yaml")]
+    got = effective_parameters(fqn, sources, files)
+    # The whole file replayed: one segment under a key every node matches.
+    monkeypatch.setattr(eff, "_ops_by_node_key", lambda model: [("/**", model.ops)])
+    assert got == effective_parameters(fqn, sources, files)
+    assert got  # the fixture sets something for every node

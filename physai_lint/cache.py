@@ -1,16 +1,19 @@
 """A content-addressed disk cache for per-file parse results.
 
 Only results that are pure functions of one file's bytes (and of the path and options named in
-the key) are stored: a launch file's IR and parse diagnostics, a parameter file's model. Nothing
-that depends on other files (resolution, includes, findings) is cached here.
+the key) are stored: a launch file's IR and parse diagnostics, a parameter file's model, what one
+C++ source declares (``interfaces/extract_cpp.py``), a package.xml's manifest data and problem,
+a CMakeLists.txt's build data (``workspace/index.py``; with the digests of the subdirectory
+CMakeLists.txt files it read, checked on every hit). Nothing that depends on other files
+(resolution, includes, findings) or on directory listings is cached here.
 
 Layout: ``<dir>/<2 hex>/<62 hex>.pickle``, the name being the SHA-256 of (code fingerprint, kind,
 options, path, text). Writes go to a temporary file in the same directory and are published with
 ``os.replace``, so concurrent runs never see half a file; an entry that cannot be read or
 unpickled is a miss; a directory that cannot be created or written turns the cache off for the
 rest of the run instead of failing it. The code fingerprint covers the package version and the
-size and modification time of every module that produces cached values, so an edited checkout
-never reads results written by older code.
+size and modification time of every module that produces cached values (and of catkin_pkg, which
+parses manifests), so an edited checkout never reads results written by older code.
 
 The directory is ``$PHYSAI_LINT_CACHE_DIR``, else the platform cache directory
 (``$XDG_CACHE_HOME/physai-lint``, ``~/.cache/physai-lint``; ``~/Library/Caches`` on macOS,
@@ -29,7 +32,9 @@ from typing import Any
 ENV_DIR = "PHYSAI_LINT_CACHE_DIR"
 FORMAT = b"physai-lint parse cache 1"
 # Modules whose code decides what a cached value looks like (relative to the package).
-_PRODUCERS = ("files.py", "cache.py", "frontends", "params", "model")
+_PRODUCERS = ("files.py", "cache.py", "frontends", "params", "model", "interfaces", "workspace")
+# Third-party packages whose code does (found without importing them: a warm run never does).
+_THIRD_PARTY = ("catkin_pkg",)
 
 
 def default_dir() -> str | None:
@@ -64,7 +69,31 @@ def code_fingerprint() -> bytes:
             except OSError:
                 continue
             h.update(f"{os.path.relpath(path, root)}:{st.st_size}:{st.st_mtime_ns}\n".encode())
+    for name in _THIRD_PARTY:
+        h.update(f"{name}:{_package_stamp(name)}\n".encode())
     return h.digest()
+
+
+def _package_stamp(name: str) -> str:
+    """(file, size, mtime) of a package's top-level modules, or "" when it is not installed."""
+    import importlib.util
+
+    try:
+        spec = importlib.util.find_spec(name)
+    except (ImportError, ValueError):
+        return ""
+    if spec is None or not spec.origin:
+        return ""
+    top = os.path.dirname(spec.origin)
+    out = []
+    try:
+        for f in sorted(os.listdir(top)):
+            if f.endswith(".py"):
+                st = os.stat(os.path.join(top, f))
+                out.append(f"{f}:{st.st_size}:{st.st_mtime_ns}")
+    except OSError:
+        return top
+    return top + ";" + ";".join(out)
 
 
 class ParseCache:
@@ -109,6 +138,14 @@ class ParseCache:
         """The stored value, or None for a miss or an entry that does not unpickle."""
         data = self.get_bytes(key)
         return None if data is None else loads(data)
+
+    def put(self, key: str, value: Any) -> None:
+        """Store a value (nothing when it does not pickle)."""
+        if not self.enabled:
+            return
+        data = dumps(value)
+        if data is not None:
+            self.put_bytes(key, data)
 
     def put_bytes(self, key: str, data: bytes) -> None:
         if not self.enabled:

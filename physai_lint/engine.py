@@ -85,13 +85,16 @@ def build_project(opts: CheckOptions, cwd: str | None = None, progress: Any = No
     # Without a launch file to resolve, the index is read only for the problems of the checked
     # packages' manifests (nothing resolves, so no rule asks it anything): build only that.
     scope = None if found.launch_files else sorted(set(paths) | set(found.param_files))
-    packages = ws.build_package_index(root, opts.distro, os.environ.get("AMENT_PREFIX_PATH"), scope)
     from physai_lint.cache import ParseCache
+
+    cache = ParseCache.open(opts.cache)  # parse results, package reading, C++ extraction
+    packages = ws.build_package_index(root, opts.distro, os.environ.get("AMENT_PREFIX_PATH"), scope,
+                                      cache=cache)
     from physai_lint.parallel import default_jobs
     from physai_lint.progress import Progress
 
     progress = progress or Progress(False)
-    store = FileStore(cache=ParseCache.open(opts.cache))
+    store = FileStore(cache=cache)
     # Parse every discovered file once, up front: from the disk cache, else in --jobs workers.
     store.preload(found.launch_files, found.param_files, opts.distro, opts.jobs or default_jobs(),
                   progress)
@@ -118,7 +121,7 @@ def build_project(opts: CheckOptions, cwd: str | None = None, progress: Any = No
             targets.update(_param_sources(r))
     param_models = _load_params(store, sorted(set(found.param_files) | _all_param_sources(launches)),
                                 opts.distro, diagnostics)
-    interfaces = _interfaces(opts, cwd, packages, diagnostics)
+    interfaces = _interfaces(opts, cwd, packages, diagnostics, cache)
     # Packages are read when first asked for; the checked ones are read here, for their problems.
     if hasattr(packages, "read_packages_holding"):
         packages.read_packages_holding(targets)
@@ -156,7 +159,8 @@ def _load_params(store: FileStore, paths: list[str], distro: str, sink: list[Dia
     return models
 
 
-def _interfaces(opts: CheckOptions, cwd: str, packages: Any, sink: list[Diagnostic]) -> Any:
+def _interfaces(opts: CheckOptions, cwd: str, packages: Any, sink: list[Diagnostic],
+                cache: Any = None) -> Any:
     from physai_lint.interfaces.store import build_interface_store
 
     files = []
@@ -166,7 +170,7 @@ def _interfaces(opts: CheckOptions, cwd: str, packages: Any, sink: list[Diagnost
             raise UsageError(f'interfaces file "{f}" does not exist')
         with open(path, encoding="utf-8", errors="replace") as fh:
             files.append((path, fh.read()))
-    store, diags = build_interface_store(files, packages, opts.distro)
+    store, diags = build_interface_store(files, packages, opts.distro, cache)
     sink.extend(diags)
     return store
 

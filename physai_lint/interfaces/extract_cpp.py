@@ -14,7 +14,7 @@ from __future__ import annotations
 import dataclasses
 import functools
 import re
-from typing import NamedTuple
+from typing import Any, NamedTuple
 
 from physai_lint.model.span import Span
 
@@ -477,10 +477,12 @@ def _interface(source: str = "") -> NodeInterface:
                          parameters_complete=False, source=source)
 
 
-def extract_cpp(files: list[tuple[str, str]]) -> NodeInterface:
+def extract_cpp(files: list[tuple[str, str]], cache: Any = None) -> NodeInterface:
+    """What the sources declare together; ``cache`` (a ``cache.ParseCache``) keeps what each
+    file declares on disk across runs."""
     iface = _interface("extracted from C++ sources")
     for path, text in files:
-        part = _file_interface(path, text)
+        part = _file_interface(path, text, cache)
         for kind in ENDPOINT_KINDS:
             getattr(iface, kind).extend(getattr(part, kind))
         for name, decl in part.parameters.items():  # type: ignore[union-attr]
@@ -490,15 +492,31 @@ def extract_cpp(files: list[tuple[str, str]]) -> NodeInterface:
     return iface
 
 
+CACHE_KIND = "cpp-interface"  # the disk cache's kind for what one file declares
+
+
 @functools.lru_cache(maxsize=1024)
-def _file_interface(path: str, text: str) -> NodeInterface:
+def _file_interface(path: str, text: str, cache: Any = None) -> NodeInterface:
     """What one file contributes, once per file (callers copy from it, never change it): a
-    package's executables share sources (2,195 extractions of 601 files on the real-world corpus)."""
+    package's executables share sources (2,195 extractions of 601 files on the real-world corpus).
+
+    A pure function of the path (spans name it) and the text: with a ``cache``, read from disk when
+    this text was seen before. Files without a call word are not stored (the check is cheaper than
+    a lookup), nor is what a failed extraction left."""
     part = _interface()
+    if not _CALL_WORDS.search(text):
+        return part
+    key = cache.key(CACHE_KIND, path, text) if cache is not None else None
+    if key is not None:
+        hit = cache.get(key)
+        if type(hit) is NodeInterface:
+            return hit
     try:
         _extract_one(path, text, part)
     except (RecursionError, IndexError, ValueError):
-        pass  # what was found before the failure stays
+        return part  # what was found before the failure stays
+    if key is not None:
+        cache.put(key, part)
     return part
 
 

@@ -235,9 +235,10 @@ def merge(layers: Iterable[NodeInterface]) -> NodeInterface | None:
 
 
 class InterfaceStore:
-    def __init__(self, packages: Any = None, distro: str = "humble") -> None:
+    def __init__(self, packages: Any = None, distro: str = "humble", cache: Any = None) -> None:
         self.packages = packages
         self.distro = distro
+        self.cache = cache  # a cache.ParseCache for per-file C++ extraction, or None
         self.declared: dict[Key, NodeInterface] = {}
         self.bundled: dict[Key, NodeInterface] = {}
         self.diagnostics: list[Diagnostic] = []
@@ -250,7 +251,7 @@ class InterfaceStore:
         py = [(p, t) for p, t in files if p.endswith(".py")]
         layers = []
         if cpp:
-            layers.append(extract_cpp(cpp))
+            layers.append(extract_cpp(cpp, self.cache))
         if py:
             layers.append(extract_py(py))
         merged = merge(layers) if layers else None
@@ -322,8 +323,10 @@ class InterfaceStore:
 
 
 def build_interface_store(interface_files: list[tuple[str, str]], packages: Any,
-                          distro: str = "humble") -> tuple[InterfaceStore, list[Diagnostic]]:
-    store = InterfaceStore(packages, distro)
+                          distro: str = "humble", cache: Any = None
+                          ) -> tuple[InterfaceStore, list[Diagnostic]]:
+    """The store; ``cache`` (a ``cache.ParseCache``, or None) keeps C++ extraction across runs."""
+    store = InterfaceStore(packages, distro, cache)
     diags: list[Diagnostic] = []
     for path, text in interface_files:
         entries, d = parse_interfaces_file(path, text)

@@ -10,7 +10,7 @@ import re
 from ._cmake_lex import Arg, Command, tokenize
 from ._model import BuildInfo, InstallRule
 
-__all__ = ["Arg", "Command", "read_cmake_package", "tokenize"]
+__all__ = ["Arg", "Command", "read_cmake_package", "read_listfile", "tokenize"]
 
 UNKNOWN = "\x00"
 _PREFIX = "\x01PREFIX"
@@ -47,6 +47,7 @@ class _Interp:
         self.plugin_targets: dict[str, str] = {}
         self.subdirs = 0
         self.auto_package = False
+        self.reads: list[tuple[str, str | None]] = []  # (path, text) of other files read
 
     # -- values ---------------------------------------------------------------------------------
 
@@ -249,6 +250,7 @@ class _Interp:
             sub = sub.rstrip("/")
             path = os.path.join(sub, "CMakeLists.txt")
             text = _read(path)
+            self.reads.append((path, text))
             if text is None:
                 return
             self.subdirs += 1
@@ -471,6 +473,7 @@ def _split_opts(a: list[str], keys: set[str]) -> tuple[list[str], dict[str, list
 
 
 def _read(path: str) -> str | None:
+    """A CMake file's text as the reader reads it (``read_cmake_package(reads=...)`` names them)."""
     try:
         with open(path, encoding="utf-8", errors="replace") as fh:
             return fh.read()
@@ -478,8 +481,14 @@ def _read(path: str) -> str | None:
         return None
 
 
-def read_cmake_package(pkg_dir: str, pkg_name: str, text: str | None = None) -> BuildInfo:
-    """Read ``<pkg_dir>/CMakeLists.txt`` statically into a ``BuildInfo``."""
+read_listfile = _read
+
+
+def read_cmake_package(pkg_dir: str, pkg_name: str, text: str | None = None,
+                       reads: list[tuple[str, str | None]] | None = None) -> BuildInfo:
+    """Read ``<pkg_dir>/CMakeLists.txt`` statically into a ``BuildInfo``. The result is a pure
+    function of the arguments and of the files appended to ``reads`` (``(path, text or None)``,
+    as ``read_listfile`` reads them: the ``add_subdirectory`` files)."""
     info = BuildInfo()
     path = pkg_dir + "/CMakeLists.txt"
     if text is None:
@@ -493,4 +502,6 @@ def read_cmake_package(pkg_dir: str, pkg_name: str, text: str | None = None) -> 
                        CMAKE_SOURCE_DIR=pkg_dir, CMAKE_CURRENT_LIST_DIR=pkg_dir)
     interp.run(tokenize(text), path)
     interp.finish()
+    if reads is not None:
+        reads.extend(interp.reads)
     return info

@@ -5,16 +5,17 @@ prefixes, and packages released in the chosen distro -- plus the *virtual instal
 from __future__ import annotations
 
 import difflib
+import hashlib
 import os
 import posixpath
 import re
 from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
-from typing import Literal
+from typing import Any, Literal
 
 from ._glob import compile_glob
 from ._model import BuildInfo, InstallRule
-from .cmake import read_cmake_package
+from .cmake import read_cmake_package, read_listfile
 from .discovery import UsageError, has_ignore_marker, skip_dir_name
 from .distro import DISTROS, released_packages
 from .package_xml import _NAME_RX, ManifestInfo, parse_manifest
@@ -120,6 +121,8 @@ class PackageIndex:
         self._installed_plugins: dict[str, frozenset[str] | None] = {}
         self._by_dir: dict[str, str] = {}  # source directory -> package name
         self._located: dict[str, Located] = {}
+        # a cache.ParseCache for what one build file says (manifests, CMakeLists.txt), or None
+        self.cache: Any = None
 
     # ---- identity -------------------------------------------------------------------------------
 
@@ -507,10 +510,12 @@ def _snapshot(pkg_dir: str) -> tuple[frozenset[str], frozenset[str]]:
 
 def build_package_index(workspace_root: str, distro: str = "humble",
                         ament_prefix_path: str | None = None,
-                        scope: Iterable[str] | None = None) -> PackageIndex:
+                        scope: Iterable[str] | None = None, cache: Any = None) -> PackageIndex:
     """The index of the workspace. With ``scope`` (paths), no package is indexed: only the
     ``problems`` of the manifests of the packages holding those paths are computed (exactly,
-    duplicate names included). That is all a run that resolves no launch file reads."""
+    duplicate names included). That is all a run that resolves no launch file reads. ``cache``
+    (a ``cache.ParseCache``, or None) keeps what each manifest and CMakeLists.txt says across
+    runs; directory listings are always read afresh."""
     if distro not in DISTROS:
         raise UsageError(f"unknown distro {distro!r}: expected one of {', '.join(DISTROS)}")
     root = _norm(workspace_root)
@@ -521,6 +526,7 @@ def build_package_index(workspace_root: str, distro: str = "humble",
             if np not in prefixes:
                 prefixes.append(np)
     index = PackageIndex(root, distro, prefixes)
+    index.cache = cache
 
     for prefix in prefixes:
         try:
@@ -645,10 +651,51 @@ def _read_manifest(index: PackageIndex, pkg_dir: str) -> ManifestInfo | None:
     if text is None:
         index.problems.append((xml_path, "package.xml is unreadable (binary, too large or not UTF-8)", 1))
         return None
-    man = parse_manifest(text, xml_path, index.distro)
+    man = _parse_manifest(index, text, xml_path)
     if man.error is not None:
         index.problems.append((xml_path, man.error[0], man.error[1]))
     return man
+
+
+# ---- what one build file says, from the disk cache when its text was seen before -----------------
+# A cached value is a pure function of the key's text, path and options (the cache's code
+# fingerprint covers these modules and catkin_pkg); a hit of the wrong shape is a miss.
+
+
+def _parse_manifest(index: PackageIndex, text: str, xml_path: str) -> ManifestInfo:
+    """``parse_manifest``: catkin_pkg's verdict and the dependency lines. A hit (a small
+    dataclass) also saves importing catkin_pkg."""
+    cache = index.cache
+    if cache is None:
+        return parse_manifest(text, xml_path, index.distro)
+    key = cache.key("manifest", xml_path, text, index.distro)
+    hit = cache.get(key)
+    if type(hit) is ManifestInfo:
+        return hit
+    man = parse_manifest(text, xml_path, index.distro)
+    cache.put(key, man)
+    return man
+
+
+def _digest(text: str | None) -> str | None:
+    return None if text is None else hashlib.sha256(text.encode("utf-8", "surrogatepass")).hexdigest()
+
+
+def _read_cmake(index: PackageIndex, pkg_dir: str, name: str, text: str | None) -> BuildInfo:
+    """``read_cmake_package``. The value stored is (BuildInfo, digests of the other CMake files
+    it read: ``add_subdirectory``), and a hit counts only while those files still read the same."""
+    cache = index.cache
+    if cache is None or text is None:
+        return read_cmake_package(pkg_dir, name, text)
+    key = cache.key("cmake", pkg_dir + "/CMakeLists.txt", text, name)
+    hit = cache.get(key)
+    if (isinstance(hit, tuple) and len(hit) == 2 and type(hit[0]) is BuildInfo
+            and all(_digest(read_listfile(p)) == d for p, d in hit[1])):
+        return hit[0]
+    reads: list[tuple[str, str | None]] = []
+    info = read_cmake_package(pkg_dir, name, text, reads)
+    cache.put(key, (info, tuple((p, _digest(t)) for p, t in reads)))
+    return info
 
 
 def _read_package(index: PackageIndex, pkg_dir: str) -> WorkspacePackage | None:
@@ -666,8 +713,8 @@ def _read_package(index: PackageIndex, pkg_dir: str) -> WorkspacePackage | None:
         info = read_setup_py(pkg_dir, name, files, index.read_text(pkg_dir + "/setup.py")
                              if "setup.py" in files else None)
     elif build_type in ("ament_cmake", "cmake"):
-        info = read_cmake_package(pkg_dir, name, index.read_text(pkg_dir + "/CMakeLists.txt")
-                                  if "CMakeLists.txt" in files else None)
+        info = _read_cmake(index, pkg_dir, name, index.read_text(pkg_dir + "/CMakeLists.txt")
+                           if "CMakeLists.txt" in files else None)
     else:
         info = BuildInfo(complete=False, executables_complete=False)
     index.notes.extend(info.problems)

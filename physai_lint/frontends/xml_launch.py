@@ -154,6 +154,10 @@ def _refuse(what: str) -> Any:
     return handler
 
 
+_HANDLERS = ("StartDoctypeDeclHandler", "EntityDeclHandler", "UnparsedEntityDeclHandler",
+             "ExternalEntityRefHandler", "StartElementHandler", "EndElementHandler")
+
+
 def parse_xml_launch(path: str, text: str) -> FrontendResult:
     """Parse an XML launch file; malformed XML or any DTD gives X001 and no IR."""
     reader = _Reader(path, text)
@@ -176,6 +180,11 @@ def parse_xml_launch(path: str, text: str) -> FrontendResult:
                                                 key="dtd")])
     except expat.ExpatError as err:
         return FrontendResult(None, [_expat_error(reader, err)])
+    finally:
+        # The start handler refers to the parser: without this, the parser, the reader and the
+        # whole element tree are a reference cycle that only the cyclic collector frees.
+        for handler in _HANDLERS:
+            setattr(parser, handler, None)
     root = reader.root
     if root is None or root.tag != "launch":
         tag = root.tag if root is not None else ""

@@ -154,8 +154,10 @@ class _Reader:
 
 def _construct(node: yaml.ScalarNode) -> Any:
     """The Python value of one non-string scalar (bool, int, float, null)."""
+    from physai_lint.params.typing import safe_constructor
+
     try:
-        return yaml.SafeLoader("").construct_object(node, deep=False)
+        return safe_constructor().construct_object(node, deep=False)
     except (yaml.YAMLError, ValueError, OverflowError):
         return None
 

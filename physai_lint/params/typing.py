@@ -271,7 +271,7 @@ def pyyaml_scalar(text: str, quoted: bool, tag: str | None) -> Any:
     if tag is not None and tag not in ("!", "?"):
         node = yaml.ScalarNode(tag, text)
         try:
-            return yaml.SafeLoader("").construct_object(node, deep=True)
+            return safe_constructor().construct_object(node, deep=True)
         except Exception:  # noqa: BLE001 -- bad tagged scalar: PyYAML would raise; keep text
             return text
     if len(text) > MAX_PYYAML_TEXT:
@@ -282,6 +282,15 @@ def pyyaml_scalar(text: str, quoted: bool, tag: str | None) -> Any:
 _RESOLVER = yaml.resolver.Resolver()  # resolve() reads only class-level tables
 
 
+def safe_constructor() -> Any:
+    """SafeLoader's constructor alone, for one scalar node: ``yaml.SafeLoader("")`` would also make
+    a reader, scanner and parser, and leave a reference cycle (its parser state is a bound method)
+    for the cyclic collector."""
+    constructor = yaml.SafeLoader.__new__(yaml.SafeLoader)
+    yaml.constructor.SafeConstructor.__init__(constructor)
+    return constructor
+
+
 @functools.lru_cache(maxsize=1 << 16)
 def _pyyaml_plain(text: str) -> Any:
     # Memoised like _rcl_type_plain: the implicit resolver's values (bool, int, float, None,
@@ -290,10 +299,8 @@ def _pyyaml_plain(text: str) -> Any:
     resolved = _RESOLVER.resolve(yaml.ScalarNode, text, (True, False))
     if resolved == YAML_STR_TAG:
         return text
-    constructor = yaml.SafeLoader.__new__(yaml.SafeLoader)
-    yaml.constructor.SafeConstructor.__init__(constructor)
     try:
-        return constructor.construct_object(yaml.ScalarNode(resolved, text), deep=True)
+        return safe_constructor().construct_object(yaml.ScalarNode(resolved, text), deep=True)
     except Exception:  # noqa: BLE001
         return text
 

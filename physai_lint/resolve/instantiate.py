@@ -342,6 +342,16 @@ class Instantiator:
     def add_edge(self, before: str, after: str, reason: str, span: Span, delay: float | None) -> None:
         self.result.edges.append(StartEdge(before, after, reason, span, delay))
 
+    def close(self) -> None:
+        """Drop the references back to this walker (the evaluator's hooks are its bound methods,
+        the node builder points at it): a finished walk is then freed by reference counting
+        instead of waiting for the cyclic collector."""
+        ev = self.ev
+        ev.on_read = ev.on_package = ev.on_bad_condition = ev.on_dirname = None
+        self.nodes.inst = None  # type: ignore[assignment]
+        self.deferred.clear()
+        self.handlers.clear()
+
     # ---- includes helpers used by resolve.includes ------------------------------------------------
     def new_record(self, rec: IncludeRecord) -> None:
         self.result.includes.append(rec)
@@ -350,5 +360,9 @@ class Instantiator:
 def resolve_launch(entry: str, cli_args: dict[str, str], loader: Loader,
                    packages: PackageIndex | None, explicit_entry: bool = True) -> LaunchResult:
     """Resolve one entry launch file as ``ros2 launch`` would, with ``NAME:=VALUE`` arguments."""
-    return Instantiator(loader, packages, explicit_entry).run(entry, cli_args)
+    inst = Instantiator(loader, packages, explicit_entry)
+    try:
+        return inst.run(entry, cli_args)
+    finally:
+        inst.close()
 

@@ -66,11 +66,13 @@ class _Budget:
 
 def to_python(node: yaml.Node, budget: _Budget | None = None) -> Any:
     """Construct a small value from a composed node, bounded (aliases are not expanded twice)."""
+    from physai_lint.params.typing import safe_constructor
+
     budget = budget or _Budget()
     budget.spend()
     if isinstance(node, yaml.ScalarNode):
         try:
-            return yaml.SafeLoader("").construct_object(node, deep=True)
+            return safe_constructor().construct_object(node, deep=True)
         except Exception:  # noqa: BLE001
             return node.value
     if isinstance(node, yaml.SequenceNode):

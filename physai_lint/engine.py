@@ -177,6 +177,7 @@ def _interfaces(opts: CheckOptions, cwd: str, packages: Any, sink: list[Diagnost
 
 def run_checks(project: Project, opts: CheckOptions, progress: Any = None) -> list[Diagnostic]:
     from physai_lint.checks.base import CheckContext, load_all
+    from physai_lint.parallel import default_jobs, run_rules
 
     ctx = CheckContext(
         launch_files={p: lf for p, lf in project.store.launches.items() if lf is not None},
@@ -184,19 +185,23 @@ def run_checks(project: Project, opts: CheckOptions, progress: Any = None) -> li
         interfaces=project.interfaces, distro=opts.distro, targets=project.targets,
         options=opts.rule_options,
     )
-    out: list[Diagnostic] = []
     rules = sorted(load_all().items())
+    where = project.entries[0] if project.entries else project.root
+
+    def run_one(code: str, impl: Any) -> list[Diagnostic]:
+        found: list[Diagnostic] = []
+        try:
+            found.extend(impl.func(ctx))
+        except Exception as exc:  # noqa: BLE001 - a rule that raises becomes an X003 finding
+            found.append(internal_error(where, f"rule {code} ({impl.name})", exc))
+        return found
+
     if progress is not None:
         progress.stage("checking", len(rules))
-    for code, impl in rules:
-        if progress is not None:
-            progress.advance()
-        try:
-            out.extend(impl.func(ctx))
-        except Exception as exc:  # a rule that raises becomes an X003 finding; the run goes on
-            where = project.entries[0] if project.entries else project.root
-            out.append(internal_error(where, f"rule {code} ({impl.name})", exc))
-    return out
+    # With --jobs > 1 on a large project, groups of rules run in forked processes: same findings,
+    # same order (physai_lint/parallel.py).
+    return run_rules(rules, run_one, opts.jobs or default_jobs(), progress,
+                     files=len(ctx.launch_files) + len(ctx.param_files))
 
 
 def to_findings(diags: list[Diagnostic], catalog: dict[str, Any], severity: dict[str, str]) -> list[Finding]:

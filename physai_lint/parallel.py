@@ -1,9 +1,13 @@
-"""``--jobs``: parse files in a process pool, results in input order.
+"""``--jobs``: parse files in a process pool, run groups of rules in forked processes.
 
 A pool costs a fork per worker and a pickle round trip per file, so small runs (the pre-commit
 case) stay in this process: below ``MIN_PARALLEL_FILES`` files to parse, or with one job, nothing
 is started. Output never depends on the number of jobs: ``map_jobs`` returns results in the
 order of its input, and the caller merges them in that order.
+
+The rules (``run_rules``) run once the project is built: groups of them in forked children that
+inherit it copy-on-write and send back only their findings, from ``MIN_FORK_FILES`` parsed files
+on; the findings are put back in rule order, so the list is the one a loop over the rules gives.
 """
 from __future__ import annotations
 
@@ -82,3 +86,267 @@ def _work(job: Any) -> tuple[bytes | None, bool]:
 
     value, cacheable = run_job(job, None)
     return dumps(value), cacheable
+
+
+# ---- the rules: groups of rules in forked processes -------------------------------------------
+
+# Below this many parsed files (launch and parameter files) the rules run in this process: the
+# fork, the copy-on-write faults and a process that may wait for a CPU cost about what a second
+# process saves. Measured on 2 CPUs, each group alone in a fork (synthetic workspaces; serial ->
+# slower group): 16 files 28 -> 20 ms, 32 files 37 -> 25 ms, 64 files 65 -> 38 ms, 128 files
+# 106 -> 49 ms; forking costs 2-9 ms (30-130 MB processes). A one-file run (its includes and
+# parameter files) stays under it. PHYSAI_LINT_FORK_MIN_FILES overrides it (tests lower it).
+MIN_FORK_FILES = 64
+FORK_MIN_ENV = "PHYSAI_LINT_FORK_MIN_FILES"
+
+# Rules that fill or read the same memo run in the same process (else each process builds it):
+# - checks/topics.graphs: the topic graphs of every launch (ctx.options["_graphs"]);
+# - the node interfaces (ctx.interfaces, an InterfaceStore: the C++ and Python sources of an
+#   executable are extracted the first time a node of it is asked about; the costliest memo),
+#   asked by the graphs and by the parameter rules that compare values with declarations;
+# - checks/_params.effective: the effective parameters of each node (ctx.options["_effective"]).
+# Cheap memos are built again in each process instead: package manifests read on first use
+# (ctx.packages), close-match suggestions and parameter typing (module lru_caches).
+# A rule missing from here is still right, only slower: it builds what it needs itself.
+SHARED_MEMOS: tuple[tuple[int, tuple[str, ...]], ...] = (
+    # (cost of the rules together, memos included, in the units of RULE_COST; the rules)
+    (1300, ("N104", "T102", "T104", "T201", "T202", "T203", "T204",  # graphs, interfaces
+           "P105", "P107", "P108", "P109", "P112",  # effective parameters, interfaces
+           "P111")),  # effective parameters
+)
+# Rules that ask those memos about a few nodes only (lifecycle managers, the target of a
+# "ros2 param" command): they compute these few wherever they run.
+LIGHT_MEMO_USERS = frozenset({"P110", "S101", "S201", "S202"})
+
+# A static cost per rule: about its milliseconds on the real-workspace benchmark (1,180 files;
+# S101 is mostly its first import of networkx); a rule not listed costs DEFAULT_COST. Only the
+# balance of the groups depends on these numbers, never the findings.
+RULE_COST: dict[str, int] = {
+    "U101": 350, "S101": 130, "L114": 95, "L101": 80, "L106": 80, "U104": 40, "L102": 30,
+    "U103": 17, "N105": 13, "L108": 10, "U102": 10,
+}
+DEFAULT_COST = 3
+
+
+def _fork_min_files() -> int:
+    try:
+        return max(0, int(os.environ.get(FORK_MIN_ENV, MIN_FORK_FILES)))
+    except ValueError:
+        return MIN_FORK_FILES
+
+
+def plan_groups(codes: Sequence[str], workers: int) -> list[list[int]]:
+    """Split rules (by their codes, in run order) into at most ``workers`` groups of indexes into
+    ``codes``: the rules of a shared memo together, groups balanced by static cost (longest unit
+    first onto the lightest group), no more groups than lower the cost of the heaviest one. The
+    heaviest group comes first (the caller runs it itself); each group keeps the run order."""
+    units: dict[Any, list[int]] = {}
+    memo_cost: dict[Any, int] = {}
+    family: dict[str, Any] = {}
+    for f, (cost, members) in enumerate(SHARED_MEMOS):
+        memo_cost[("memo", f)] = cost
+        family.update((c, ("memo", f)) for c in members)
+    for i, code in enumerate(codes):
+        units.setdefault(family.get(code, code), []).append(i)
+    costed = sorted(((memo_cost.get(key, 0) + sum(RULE_COST.get(codes[i], DEFAULT_COST) for i in idx), idx)
+                     for key, idx in units.items()), key=lambda u: (-u[0], u[1][0]))
+
+    def pack(n: int) -> list[tuple[int, list[int]]]:
+        bins: list[tuple[int, list[int]]] = [(0, []) for _ in range(n)]
+        for cost, idx in costed:
+            k = min(range(n), key=lambda b: (bins[b][0], b))
+            bins[k] = (bins[k][0] + cost, bins[k][1] + idx)
+        return [b for b in bins if b[1]]
+
+    best = pack(1)
+    for n in range(2, max(1, min(workers, len(costed))) + 1):
+        bins = pack(n)
+        # one more process only when it makes the heaviest group clearly lighter
+        if max(c for c, _ in bins) < 0.95 * max(c for c, _ in best):
+            best = bins
+    best.sort(key=lambda b: (-b[0], min(b[1])))
+    return [sorted(idx) for _, idx in best]
+
+
+def run_rules(rules: Sequence[tuple[str, Any]], run_one: Any, jobs: int, progress: Any = None,
+              files: int = 0) -> list[Any]:
+    """``run_one(code, impl)`` (a list of findings; it never raises) for every rule, concatenated in
+    the order of ``rules``: exactly what a loop over them returns.
+
+    With more than one job, a platform that forks, and at least ``MIN_FORK_FILES`` parsed
+    ``files``, the rules are split into groups (``plan_groups``); each group but the first runs in
+    a forked child, which inherits the project copy-on-write and sends back only its pickled
+    findings, and this process runs the first. A child that dies, or whose findings do not come
+    back whole, has its group run again here: findings are never lost."""
+    groups = plan_groups([c for c, _ in rules], jobs) if _can_fork(jobs, files) else []
+    results: list[list[Any] | None] = [None] * len(rules)
+    shown: set[int] = set()  # rules already counted on the progress bar
+    if len(groups) > 1:
+        shown = _run_forked(rules, run_one, groups, results, progress)
+    for i, (code, impl) in enumerate(rules):
+        if results[i] is None:  # not forked, or its child failed
+            if progress is not None and i not in shown:
+                progress.advance()
+            results[i] = run_one(code, impl)
+    return [d for found in results for d in found]  # type: ignore[union-attr]
+
+
+def _can_fork(jobs: int, files: int) -> bool:
+    import threading
+
+    return (jobs > 1 and files >= _fork_min_files() and hasattr(os, "fork")
+            and sys.platform != "darwin"  # as for the parse pool: fork is unsafe there
+            and threading.active_count() == 1)  # forking a threaded process can deadlock the child
+
+
+class _Child:
+    """A forked child running one group: it writes b"+" per finished rule, then b"=" and the
+    pickled list of the group's findings per rule, and exits 0."""
+
+    def __init__(self, group: list[int], pid: int, fd: int) -> None:
+        self.group, self.pid, self.fd = group, pid, fd
+        self.data = bytearray()
+        self.done = 0  # rules the child said it finished
+        self.eof = False
+        self.status: int | None = None  # its wait status, once reaped
+
+    def read(self, progress: Any) -> None:
+        """Whatever the child has written so far, without blocking."""
+        while not self.eof:
+            try:
+                chunk = os.read(self.fd, 1 << 20)
+            except BlockingIOError:
+                return
+            except OSError:
+                chunk = b""
+            if not chunk:
+                self.eof = True
+                os.close(self.fd)
+                return
+            if len(self.data) == self.done:  # still in the b"+" prefix
+                plus = len(chunk) - len(chunk.lstrip(b"+"))
+                self.done += plus
+                if progress is not None and plus:
+                    progress.advance(plus)
+            self.data += chunk
+
+    def reap(self, kill: bool = False) -> None:
+        if self.status is not None:
+            return
+        try:
+            if kill:
+                import signal
+
+                os.kill(self.pid, signal.SIGKILL)
+            self.status = os.waitpid(self.pid, 0)[1]
+        except OSError:
+            self.status = -1
+        if not self.eof:
+            self.eof = True
+            os.close(self.fd)
+
+    def findings(self) -> list[list[Any]] | None:
+        """The child's findings per rule of its group, or None when they did not come back whole."""
+        import pickle
+
+        self.reap()
+        body = bytes(self.data[self.done:])
+        if self.status != 0 or self.done != len(self.group) or body[:1] != b"=":
+            return None
+        try:
+            value = pickle.loads(body[1:])
+        except Exception:  # noqa: BLE001 - anything that does not load: run the group here
+            return None
+        if not isinstance(value, list) or len(value) != len(self.group) or \
+                not all(isinstance(found, list) for found in value):
+            return None
+        return value
+
+
+def _run_forked(rules: Sequence[tuple[str, Any]], run_one: Any, groups: list[list[int]],
+                results: list[list[Any] | None], progress: Any) -> set[int]:
+    """Groups 1.. in forked children, group 0 here; fills ``results`` with what came back whole
+    (the caller runs the rest) and returns the rules already counted on the progress bar."""
+    import gc
+    import selectors
+
+    # Objects frozen before the fork are never visited by the children's collector: their pages
+    # stay shared instead of being copied by a collection.
+    freeze = gc.get_freeze_count() == 0
+    if freeze:
+        gc.freeze()
+    children: list[_Child] = []
+    shown: set[int] = set()
+    try:
+        for group in groups[1:]:
+            child = _fork(rules, run_one, group)
+            if child is not None:
+                children.append(child)
+        for i in groups[0]:
+            if progress is not None:
+                progress.advance()
+            shown.add(i)
+            results[i] = run_one(*rules[i])
+            for child in children:
+                child.read(progress)
+        with selectors.DefaultSelector() as sel:
+            for child in children:
+                if not child.eof:
+                    sel.register(child.fd, selectors.EVENT_READ, child)
+            while sel.get_map():
+                for key, _ in sel.select():
+                    child = key.data
+                    child.read(progress)
+                    if child.eof:
+                        sel.unregister(key.fileobj)
+        for child in children:
+            shown.update(child.group[:child.done])
+            found = child.findings()
+            if found is not None:
+                for i, f in zip(child.group, found):
+                    results[i] = f
+    finally:
+        for child in children:
+            child.reap(kill=child.status is None and not child.eof)  # interrupted: stop them
+        if freeze:
+            gc.unfreeze()
+    return shown
+
+
+def _fork(rules: Sequence[tuple[str, Any]], run_one: Any, group: list[int]) -> _Child | None:
+    try:
+        r, w = os.pipe()
+    except OSError:
+        return None
+    try:
+        pid = os.fork()
+    except OSError:
+        os.close(r)
+        os.close(w)
+        return None
+    if pid == 0:  # the child: never returns
+        _child(rules, run_one, group, r, w)
+    os.close(w)
+    os.set_blocking(r, False)
+    return _Child(group, pid, r)
+
+
+def _child(rules: Sequence[tuple[str, Any]], run_one: Any, group: list[int], r: int, w: int) -> None:
+    status = 1
+    try:
+        import pickle
+
+        os.close(r)
+        found = []
+        for i in group:
+            found.append(run_one(*rules[i]))
+            os.write(w, b"+")
+        data = b"=" + pickle.dumps(found, protocol=pickle.HIGHEST_PROTOCOL)
+        view = memoryview(data)
+        while view:
+            view = view[os.write(w, view):]
+        status = 0
+    except BaseException:  # noqa: BLE001, S110 - the parent runs the group again
+        pass
+    finally:
+        os._exit(status)

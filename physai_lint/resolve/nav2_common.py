@@ -424,6 +424,35 @@ def _loaded_copy(text: str, file: str, virtual: VirtualFile | None
     return copy(data), out_spans
 
 
+# The dumped files of one process repeat the same few thousand scalars (47 rewrites of one
+# nav2_params.yaml): what PyYAML computes from a scalar's text alone is computed once.
+_MEMO_SIZE = 200_000
+# A scalar mapping key's value by (tag, text), as ``construct_object`` makes it: immutable values
+# (str, int, float, bool, None, bytes, dates), None where construction fails.
+_KEYS: dict[tuple[str, str], Any] = {}
+
+
+def _resolve_memo(base: Any) -> Callable[..., str]:
+    """``base.resolve``, memoised for scalars: with no path resolvers registered, the tag of a
+    scalar depends on its text and implicit flags only. One table per class (each class may have
+    its own implicit resolvers)."""
+    resolve: Callable[..., str] = base.resolve
+    memo: dict[tuple[str, Any], str] = {}
+
+    def cached(self: Any, kind: Any, value: Any, implicit: Any) -> str:
+        if kind is not yaml.ScalarNode or self.yaml_path_resolvers:
+            return resolve(self, kind, value, implicit)
+        key = (value, implicit)
+        tag = memo.get(key)
+        if tag is None:
+            if len(memo) > _MEMO_SIZE:
+                memo.clear()
+            tag = memo[key] = resolve(self, kind, value, implicit)
+        return tag
+
+    return cached
+
+
 # ``yaml.dump``'s Dumper with libyaml's emitter where installed: the same representer and resolver
 # choose tags and styles, and on the ~900 YAML files of public ROS 2 repositories the text is the
 # same except the ``...`` after a bare scalar document, which a RewrittenYaml never writes.
@@ -448,11 +477,17 @@ def _shared(ev: Evaluator, key: tuple[Any, ...], make: Callable[[str], VirtualFi
     return vf
 
 
+class _PositionLoader(_SAFE_LOADER):  # type: ignore[misc,valid-type]
+    """The safe loader with ``resolve`` memoised (a third of ``_map_positions``' compose)."""
+
+    resolve = _resolve_memo(_SAFE_LOADER)
+
+
 def _map_positions(vf: VirtualFile, dumped: str, data: Any,
                    spans: dict[int, dict[Any, tuple[Span, Span]]]) -> None:
     """Map each node of the dumped text to where the same value came from."""
     # Composed only (libyaml): the values are ``data`` already; only mapping keys are constructed.
-    loader = _SAFE_LOADER(dumped)
+    loader = _PositionLoader(dumped)
     try:
         node = loader.get_single_node()
     except (yaml.YAMLError, ValueError, TypeError, RecursionError):
@@ -460,10 +495,20 @@ def _map_positions(vf: VirtualFile, dumped: str, data: Any,
         return
 
     def key_of(kn: Any) -> Any:
+        if type(kn) is yaml.ScalarNode:
+            memo = (kn.tag, kn.value)
+            got = _KEYS.get(memo, _KEYS)
+            if got is not _KEYS:
+                return got
         try:
-            return loader.construct_object(kn, deep=True)
+            got = loader.construct_object(kn, deep=True)
         except (yaml.YAMLError, ValueError, TypeError, RecursionError):
-            return None
+            got = None
+        if type(kn) is yaml.ScalarNode:
+            if len(_KEYS) > _MEMO_SIZE:
+                _KEYS.clear()
+            _KEYS[memo] = got
+        return got
 
     def at(n: Any) -> tuple[int, int]:
         return n.start_mark.line + 1, n.start_mark.column + 1

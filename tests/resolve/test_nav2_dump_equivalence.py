@@ -1,0 +1,139 @@
+"""The fast paths of nav2_common's RewrittenYaml against the slow ones they replace: the memoised
+resolver and key construction map the same positions."""
+from __future__ import annotations
+
+from typing import Any
+
+import yaml
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from physai_lint.model.span import Span
+from physai_lint.resolve import nav2_common as nc
+
+CDUMPER = getattr(yaml, "CDumper", yaml.Dumper)
+CLOADER = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+
+# Texts that YAML 1.1 resolves to other types, or that the emitter must quote or escape.
+TRICKY = ["", " ", "y", "Yes", "off", "~", "null", "NULL", "1_000", "0x1F", "0o17", "017", "1e3",
+          "1.5e+3", ".inf", "-.Inf", ".nan", "2001-12-14", "2001-12-14 21:59:43.10 -5", "=", "<<",
+          ":", "a: b", "- a", "#c", "a #c", "'", '"', "*x", "&y", "!t", "%", "@", "`", "{a}", "[1]",
+          "a\nb", "tab\tx", "trailing ", "\x85", "\u2028", "é", "日本", "\U0001f600", "x" * 130,
+          "UNKNOWN_" + nc.UNKNOWN_PREFIX + "1", nc.UNKNOWN_PREFIX + "2"]
+
+scalars = st.one_of(
+    st.none(), st.booleans(), st.integers(), st.integers(min_value=-(10 ** 30), max_value=10 ** 30),
+    st.floats(allow_nan=True, allow_infinity=True), st.sampled_from(TRICKY), st.text(max_size=12),
+)
+keys = st.one_of(st.sampled_from(TRICKY), st.text(max_size=8), st.integers(-5, 5), st.booleans(),
+                 st.none(), st.floats(allow_nan=False, allow_infinity=True))
+data = st.recursive(scalars, lambda inner: st.one_of(
+    st.lists(inner, max_size=4), st.dictionaries(keys, inner, max_size=5)), max_leaves=30)
+
+
+def _with_shared(value: Any) -> Any:
+    """``value`` and containers of it that hold one object twice (the dump writes anchors)."""
+    return {"a": value, "b": value, "c": [value, {"d": value}]}
+
+
+# ---- the memoised resolver -----------------------------------------------------------------------
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.one_of(st.sampled_from(TRICKY), st.text(max_size=10)), st.booleans(), st.booleans())
+def test_memoised_resolve_is_resolve(text: str, plain: bool, quoted: bool) -> None:
+    for memo, base in ((nc._PositionLoader(""), CLOADER),):
+        for _ in range(2):  # computed, then memoised
+            got = memo.resolve(yaml.ScalarNode, text, (plain, quoted))
+            assert got == base.resolve(memo, yaml.ScalarNode, text, (plain, quoted))
+
+
+# ---- positions -----------------------------------------------------------------------------------
+
+
+def _map_positions_reference(vf: nc.VirtualFile, dumped: str, data: Any, spans: Any) -> None:
+    """``_map_positions`` before the memoised resolver and key construction (the plain loader)."""
+    loader = CLOADER(dumped)
+    try:
+        node = loader.get_single_node()
+    except (yaml.YAMLError, ValueError, TypeError, RecursionError):
+        loader.dispose()
+        return
+
+    def key_of(kn: Any) -> Any:
+        try:
+            return loader.construct_object(kn, deep=True)
+        except (yaml.YAMLError, ValueError, TypeError, RecursionError):
+            return None
+
+    def at(n: Any) -> tuple[int, int]:
+        return n.start_mark.line + 1, n.start_mark.column + 1
+
+    def walk(n: Any, obj: Any) -> None:
+        table = spans.get(id(obj), {})
+        if isinstance(n, yaml.MappingNode) and isinstance(obj, dict):
+            for kn, vn in n.value:
+                key = key_of(kn)
+                try:
+                    hit = table.get(key)
+                    child = obj.get(key)
+                except TypeError:
+                    continue
+                if hit is not None:
+                    vf.origin[at(kn)] = hit[0]
+                    vf.origin[at(vn)] = hit[1]
+                walk(vn, child)
+        elif isinstance(n, yaml.SequenceNode) and isinstance(obj, list):
+            for i, item in enumerate(n.value):
+                hit = table.get(i)
+                if hit is not None:
+                    vf.origin[at(item)] = hit[1]
+                if i < len(obj):
+                    walk(item, obj[i])
+
+    if node is not None:
+        walk(node, data)
+    loader.dispose()
+
+
+def _same_positions(source: str) -> None:
+    loaded = nc._load(source, "/src/params.yaml", lambda n: nc._mark_span("/src/params.yaml", n))
+    if loaded is None:
+        return
+    value, spans = loaded
+    try:
+        dumped = yaml.dump(value, Dumper=CDUMPER)
+    except yaml.YAMLError:
+        return
+    fallback = Span.whole_file("/src/params.yaml")
+    got = nc.VirtualFile("/v.yaml", dumped, {}, fallback, None)
+    want = nc.VirtualFile("/v.yaml", dumped, {}, fallback, None)
+    nc._map_positions(got, dumped, value, spans)
+    _map_positions_reference(want, dumped, value, spans)
+    assert got.origin == want.origin
+
+
+@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(data, st.booleans())
+def test_memoised_positions_are_the_same(value: Any, flow: bool) -> None:
+    for v in (value, _with_shared(value)):
+        try:
+            source = yaml.dump(v, Dumper=CDUMPER, default_flow_style=flow)
+        except yaml.YAMLError:
+            continue
+        _same_positions(source)
+
+
+def test_memoised_positions_on_written_sources() -> None:
+    for source in [
+        "a: 1\nb:\n  c: [1, 2]\n  d: {e: f}\n",
+        "base: &b {x: 1, y: [1, 2]}\nother: *b\nmore:\n  <<: *b\n  z: 3\n",  # aliases and merge
+        ".nan: 1\n.inf: 2\n1.0: 3\n2001-12-14: 4\n2001-13-45: 5\n? [1, 2]\n: 6\n",
+        "!!binary aGVsbG8=: 1\n'1': a\n1: b\nnull: c\n~: d\ntrue: e\nyes: f\n",
+        "n:\n  ros__parameters:\n    list:\n    - a\n    - {b: c}\n    -\n      - d\n    s: |\n      x\n",
+        "- 1\n- [2, 3]\n- {a: b}\n",
+        "plain",
+    ]:
+        _same_positions(source)
+
+

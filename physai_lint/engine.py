@@ -67,6 +67,7 @@ def _abs(path: str, cwd: str) -> str:
 
 def build_project(opts: CheckOptions, cwd: str | None = None, progress: Any = None) -> Project:
     """Discover, parse and resolve: the model that every subcommand reads."""
+    from physai_lint import gcpolicy
     from physai_lint import workspace as ws
     from physai_lint.resolve.instantiate import resolve_launch
     from physai_lint.resolve.roots import choose_roots
@@ -98,6 +99,7 @@ def build_project(opts: CheckOptions, cwd: str | None = None, progress: Any = No
     # Parse every discovered file once, up front: from the disk cache, else in --jobs workers.
     store.preload(found.launch_files, found.param_files, opts.distro, opts.jobs or default_jobs(),
                   progress)
+    gcpolicy.parsing_done()
     diagnostics: list[Diagnostic] = []
 
     def loader(path: str) -> Any:

@@ -665,15 +665,83 @@ def evaluate(ev: Evaluator, p: Any, scope: Scope) -> str | None:
 
 def _param_model(vf: VirtualFile, distro: str) -> ParamFileModel | None:
     from physai_lint.params.loader import load_param_file
+    from physai_lint.params.model import FileParam, NodeBlock, ParamFileModel
 
     model = load_param_file(vf.path, vf.text, distro)
+    path = vf.path
+    span_of = vf.span_of
     memo: dict[int, Any] = {}
 
     def span(s: Span) -> Span:
-        if s.file != vf.path:
+        if s.file != path:
             return s
-        return vf.span_of(s.line, s.col)
+        return span_of(s.line, s.col)
 
+    if type(model) is not ParamFileModel or not _model_shapes_known() or model.op_segments is not None:
+        return _param_model_generic(vf, model, span, memo)
+    # ``_remap`` of the model, spelled out for the shapes the loader builds (a fifth of the cost of
+    # a nav2 rewrite went into the generic walk). Values are scalars or lists of scalars: kept as
+    # they are instead of copied. Placeholders become unknown values in the same pass.
+    params: dict[int, Any] = {}
+
+    def param(p: Any) -> Any:
+        got = params.get(id(p))
+        if got is None:
+            if type(p) is FileParam:
+                got = FileParam(p.name, p.value, p.kind, p.raw, span(p.value_span), span(p.key_span),
+                                p.quoted, p.launch_value)
+            else:
+                got = _remap(p, span, memo)
+            params[id(p)] = got
+        return got
+
+    def unknown(p: Any) -> Any:
+        if type(p) is FileParam:
+            return FileParam(p.name, None, p.kind, p.raw, p.value_span, p.key_span, p.quoted, None)
+        return dataclasses.replace(p, value=None, launch_value=None)
+
+    ops = []
+    for op in model.ops:
+        tag = op[0] if type(op) is tuple and op else None
+        if tag == "set" and len(op) == 4:
+            fp = op[3]
+            fp = param(fp) if fp is not None else None
+            if _has_placeholder(op[2]):
+                op = ("set", "unknown", None, unknown(fp) if fp is not None else None)
+            else:
+                op = (tag, op[1], op[2], fp)
+        elif tag == "node" and len(op) == 3 and type(op[2]) is Span:
+            op = (tag, op[1], span(op[2]))
+        elif (tag == "param" or tag == "rename") and len(op) == 2 and type(op[1]) is str:
+            pass
+        else:
+            op = _remap(op, span, memo)
+            if type(op) is tuple and op and op[0] == "set" and _has_placeholder(op[2]):
+                fp = op[3]
+                op = ("set", "unknown", None, unknown(fp) if fp is not None else None)
+        ops.append(op)
+    blocks = []
+    for b in model.blocks:
+        if type(b) is NodeBlock:
+            pks = b.params_key_span
+            b = NodeBlock(b.key, span(b.key_span), tuple(
+                unknown(prm) if _has_placeholder(prm.value) else prm for prm in map(param, b.params)),
+                b.nested, span(pks) if pks is not None else None, b.params_key_exact)
+        else:
+            b = _remap(b, span, memo)
+            b = dataclasses.replace(b, params=tuple(
+                unknown(prm) if _has_placeholder(prm.value) else prm for prm in b.params))
+        blocks.append(b)
+    model.ops = ops
+    model.blocks = blocks
+    model.diagnostics = _remap(model.diagnostics, span, memo)
+    model.path = vf.source or vf.path
+    return model
+
+
+def _param_model_generic(vf: VirtualFile, model: Any, span: Callable[[Span], Span],
+                         memo: dict[int, Any]) -> Any:
+    """``_param_model`` by the generic ``_remap``: for shapes the fast path does not know."""
     model = _remap(model, span, memo)
     model.path = vf.source or vf.path
     ops = []
@@ -688,6 +756,28 @@ def _param_model(vf: VirtualFile, distro: str) -> ParamFileModel | None:
         dataclasses.replace(prm, value=None, launch_value=None) if _has_placeholder(prm.value) else prm
         for prm in b.params)) for b in model.blocks]
     return model
+
+
+_SHAPES: list[bool] = []
+
+
+def _model_shapes_known() -> bool:
+    """The params model still has the fields ``_param_model``'s fast path rebuilds (a field added
+    later, which might hold a span, sends models through the generic ``_remap``)."""
+    if not _SHAPES:
+        from physai_lint.params.model import FileParam, NodeBlock, ParamFileModel
+
+        def names(cls: type) -> tuple[str, ...]:
+            return tuple(f.name for f in dataclasses.fields(cls))
+
+        _SHAPES.append(
+            names(FileParam) == ("name", "value", "kind", "raw", "value_span", "key_span", "quoted",
+                                 "launch_value")
+            and names(NodeBlock) == ("key", "key_span", "params", "nested", "params_key_span",
+                                     "params_key_exact")
+            and names(ParamFileModel) == ("path", "blocks", "diagnostics", "ops", "ok",
+                                          "has_ros_parameters", "distro", "op_segments"))
+    return _SHAPES[0]
 
 
 def _has_placeholder(value: Any) -> bool:

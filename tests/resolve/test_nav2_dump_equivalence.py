@@ -1,5 +1,6 @@
 """The fast paths of nav2_common's RewrittenYaml against the slow ones they replace: the memoised
-resolver and key construction map the same positions."""
+resolver and key construction map the same positions, and the spelled-out span mapping of a
+virtual file's params model builds the model the generic ``_remap`` builds."""
 from __future__ import annotations
 
 from typing import Any
@@ -9,6 +10,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from physai_lint.model.span import Span
+from physai_lint.params.loader import load_param_file
 from physai_lint.resolve import nav2_common as nc
 
 CDUMPER = getattr(yaml, "CDumper", yaml.Dumper)
@@ -137,3 +139,71 @@ def test_memoised_positions_on_written_sources() -> None:
         _same_positions(source)
 
 
+# ---- the params model of a virtual file ----------------------------------------------------------
+
+
+PARAM_TEXTS = [
+    "/**:\n  ros__parameters:\n    a: 1\n    b: [1, 2]\n    c: {d: 2.5, e: [x, y]}\n",
+    f"n:\n  ros__parameters:\n    u: {nc.UNKNOWN_PREFIX}1\n    l: [a, {nc.UNKNOWN_PREFIX}2]\n    k: 3\n",
+    "ns:\n  n:\n    ros__parameters:\n      a: 1\n      a: 2\n      empty: []\n",  # X006, empty array
+    "n:\n  ros__parameters:\n    mixed: [1, a]\n",  # P106
+    "n:\n  value_first: 1\n",  # P104
+    "n:\n  ros__parameters:\n    a: &x 1\n    b: *x\n",  # alias
+    "n: [\n",  # X001
+    "n:\n  ros__parameters:\n    gpio:\n    - interfaces: [a, b]\n    q: ''\n",
+    "n:\n  ros__parameters:\n    e: []\n    e: [1]\n",
+    "",
+]
+
+
+def _fast_and_generic(vf: nc.VirtualFile, distro: str) -> None:
+    got = nc._param_model(vf, distro)
+
+    def span(s: Span) -> Span:
+        return s if s.file != vf.path else vf.span_of(s.line, s.col)
+
+    want = nc._param_model_generic(vf, load_param_file(vf.path, vf.text, distro), span, {})
+    assert got == want
+    # the same FileParam objects are shared between ops and blocks
+    got_ops = {id(op[3]) for op in got.ops if op[0] == "set"}
+    want_ops = {id(op[3]) for op in want.ops if op[0] == "set"}
+    assert ([id(p) in got_ops for b in got.blocks for p in b.params]
+            == [id(p) in want_ops for b in want.blocks for p in b.params])
+
+
+def _virtual(text: str, every: int) -> nc.VirtualFile:
+    origin = {}
+    for i, line in enumerate(text.splitlines(), start=1):
+        for col in range(1, len(line) + 2):
+            if (i * 31 + col) % every == 0:
+                origin[(i, col)] = Span("/src/p.yaml", i + 100, col, i + 100, col + 1)
+    return nc.VirtualFile("/tmp/physai-lint-virtual/x.yaml", text,
+                          origin, Span("/launch.py", 3, 1, 3, 9), "/src/p.yaml")
+
+
+def test_param_model_fast_path_knows_the_model() -> None:
+    """A field added to the params model sends every model through the generic ``_remap`` until
+    ``_param_model``'s fast path rebuilds it too."""
+    assert nc._model_shapes_known()
+
+
+def test_param_model_fast_path_is_the_generic_remap() -> None:
+    for text in PARAM_TEXTS:
+        for every in (1, 3, 10 ** 6):
+            for distro in ("humble", "jazzy"):
+                _fast_and_generic(_virtual(text, every), distro)
+
+
+params_data = st.dictionaries(
+    st.sampled_from(["n", "/**", "/ns/n", "a"]),
+    st.one_of(st.dictionaries(st.just("ros__parameters"), data, max_size=1), data), max_size=3)
+
+
+@settings(max_examples=200, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(params_data, st.integers(1, 7))
+def test_param_model_fast_path_on_dumped_data(value: Any, every: int) -> None:
+    try:
+        text = yaml.dump(value, Dumper=CDUMPER)
+    except yaml.YAMLError:
+        return
+    _fast_and_generic(_virtual(text, every), "humble")

@@ -185,7 +185,9 @@ def run_checks(project: Project, opts: CheckOptions, progress: Any = None) -> li
         launch_files={p: lf for p, lf in project.store.launches.items() if lf is not None},
         param_files=project.param_files, launches=project.launches, packages=project.packages,
         interfaces=project.interfaces, distro=opts.distro, targets=project.targets,
-        options=opts.rule_options,
+        # A copy: rules keep per-run memos in it (keyed by node identity), which must neither
+        # leak into the caller's options nor outlive this run.
+        options=dict(opts.rule_options),
     )
     rules = sorted(load_all().items())
     where = project.entries[0] if project.entries else project.root

@@ -456,7 +456,80 @@ def _resolve_memo(base: Any) -> Callable[..., str]:
 # ``yaml.dump``'s Dumper with libyaml's emitter where installed: the same representer and resolver
 # choose tags and styles, and on the ~900 YAML files of public ROS 2 repositories the text is the
 # same except the ``...`` after a bare scalar document, which a RewrittenYaml never writes.
-_DUMPER = getattr(yaml, "CDumper", yaml.Dumper)
+_BASE_DUMPER = getattr(yaml, "CDumper", yaml.Dumper)
+_STR, _INT, _BOOL, _NULL = ("tag:yaml.org,2002:str", "tag:yaml.org,2002:int", "tag:yaml.org,2002:bool",
+                            "tag:yaml.org,2002:null")
+_SEQ, _MAP = "tag:yaml.org,2002:seq", "tag:yaml.org,2002:map"
+
+
+class _Dumper(_BASE_DUMPER):  # type: ignore[misc,valid-type]
+    """``_BASE_DUMPER`` with ``represent_data`` spelled out for exactly-typed ``str``, ``int``,
+    ``float``, ``bool``, ``None``, ``dict`` and ``list`` (the same nodes, anchors and styles as the
+    representers it inherits, which still handle every other type) and ``resolve`` memoised:
+    the same nodes, so the same text, for a quarter less than ``yaml.dump`` with ``CDumper``."""
+
+    resolve = _resolve_memo(_BASE_DUMPER)
+
+    def represent_data(self, data: Any) -> Any:
+        kind = type(data)
+        if kind is str:
+            self.alias_key = None
+            return yaml.ScalarNode(_STR, data, style=self.default_style)
+        if kind is dict or kind is list:
+            return self._container(data, kind is dict)
+        if kind is int:
+            self.alias_key = None
+            return yaml.ScalarNode(_INT, str(data), style=self.default_style)
+        if kind is float:
+            self.alias_key = None
+            return self.represent_float(data)
+        if kind is bool:
+            self.alias_key = None
+            return yaml.ScalarNode(_BOOL, "true" if data else "false", style=self.default_style)
+        if data is None:
+            self.alias_key = None
+            return yaml.ScalarNode(_NULL, "null", style=self.default_style)
+        return super().represent_data(data)
+
+    def _container(self, data: Any, mapping: bool) -> Any:
+        # BaseRepresenter.represent_data + represent_mapping / represent_sequence
+        alias_key = id(data)
+        self.alias_key = alias_key  # type: ignore[assignment]
+        known = self.represented_objects
+        if alias_key in known:
+            return known[alias_key]
+        self.object_keeper.append(data)
+        value: list[Any] = []
+        best_style = True
+        represent = self.represent_data
+        if mapping:
+            node = known[alias_key] = yaml.MappingNode(_MAP, value, flow_style=None)
+            items = list(data.items())
+            if self.sort_keys:
+                try:
+                    items = sorted(items)
+                except TypeError:
+                    pass
+            for item_key, item_value in items:
+                node_key = represent(item_key)
+                node_value = represent(item_value)
+                if not (isinstance(node_key, yaml.ScalarNode) and not node_key.style):
+                    best_style = False
+                if not (isinstance(node_value, yaml.ScalarNode) and not node_value.style):
+                    best_style = False
+                value.append((node_key, node_value))
+        else:
+            node = known[alias_key] = yaml.SequenceNode(_SEQ, value, flow_style=None)
+            for item in data:
+                node_item = represent(item)
+                if not (isinstance(node_item, yaml.ScalarNode) and not node_item.style):
+                    best_style = False
+                value.append(node_item)
+        node.flow_style = self.default_flow_style if self.default_flow_style is not None else best_style
+        return node
+
+
+_DUMPER = _Dumper
 
 # The temporary files of one process, by everything that decides their text and positions: the
 # same input gives the same file (and the same parsed model) to every entry and every run.

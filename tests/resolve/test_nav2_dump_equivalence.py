@@ -1,8 +1,13 @@
-"""The fast paths of nav2_common's RewrittenYaml against the slow ones they replace: the memoised
-resolver and key construction map the same positions, and the spelled-out span mapping of a
-virtual file's params model builds the model the generic ``_remap`` builds."""
+"""The fast paths of nav2_common's RewrittenYaml against the slow ones they replace: the dumper
+writes the text ``yaml.dump(data, Dumper=CDumper)`` writes, the memoised resolver and key
+construction map the same positions, and the spelled-out span mapping of a virtual file's params
+model builds the model the generic ``_remap`` builds."""
 from __future__ import annotations
 
+import datetime
+import io
+import math
+from collections import OrderedDict
 from typing import Any
 
 import yaml
@@ -38,13 +43,65 @@ def _with_shared(value: Any) -> Any:
     return {"a": value, "b": value, "c": [value, {"d": value}]}
 
 
+# ---- the dumper ----------------------------------------------------------------------------------
+
+
+def _same_dump(value: Any) -> None:
+    try:
+        expected = yaml.dump(value, Dumper=CDUMPER)
+    except Exception as exc:  # the fast dumper must fail the same way
+        try:
+            yaml.dump(value, Dumper=nc._DUMPER)
+        except Exception as got:  # noqa: BLE001
+            assert type(got) is type(exc)
+            return
+        raise AssertionError(f"CDumper raised {exc!r}, the fast dumper did not") from exc
+    assert yaml.dump(value, Dumper=nc._DUMPER) == expected
+
+
+@settings(max_examples=400, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(data)
+def test_fast_dumper_writes_what_cdumper_writes(value: Any) -> None:
+    _same_dump(value)
+    _same_dump(_with_shared(value))
+    _same_dump({"root": {"ros__parameters": value}})
+
+
+def test_fast_dumper_on_other_types_and_shapes() -> None:
+    shared_list = [1, 2.5, "x"]
+    shared_map: dict[str, Any] = {"k": shared_list}
+    for value in [
+        None, "", "y", 1, -0.0, 1e17, 1e-7, 3.0, math.nan, math.inf, -math.inf, 10 ** 40, True,
+        [], {}, [[]], [{}], {"a": []}, {"a": {}}, {1: "a", "b": 2},  # mixed keys: not sorted
+        {None: 1, True: 2}, {2.5: "x", 1: "y"}, {"s": {1, 2}}, {"t": (1, 2)}, (1, "a"),
+        {"d": datetime.date(2024, 1, 2), "t": datetime.datetime(2024, 1, 2, 3, 4, 5)},
+        {"b": b"\x00\x01bytes"}, OrderedDict([("z", 1), ("a", [1, 2])]),
+        {"m": shared_map, "n": shared_map, "l": shared_list}, [shared_list, shared_list],
+        {"x" * 200: 1, "a\nb": [1, {"k": "v"}]}, {"deep": [[[1, [2, {"a": [3]}]]]]},
+        {"node": {"ros__parameters": {"rate": 10, "names": ["a", "b"], "on": "on", "v": 1.5}}},
+    ]:
+        _same_dump(value)
+
+
+def test_fast_dumper_keeps_the_standard_representers() -> None:
+    """The fast path spells out these representers: it is only right while they are the ones in
+    use (a representer registered for one of these types would be skipped)."""
+    sr = yaml.representer.SafeRepresenter
+    table = nc._DUMPER.yaml_representers
+    assert table[str] is sr.represent_str and table[int] is sr.represent_int
+    assert table[float] is sr.represent_float and table[bool] is sr.represent_bool
+    assert table[type(None)] is sr.represent_none and table[dict] is sr.represent_dict
+    assert table[list] is sr.represent_list
+    assert not nc._DUMPER.yaml_path_resolvers and not CLOADER.yaml_path_resolvers
+
+
 # ---- the memoised resolver -----------------------------------------------------------------------
 
 
 @settings(max_examples=300, deadline=None)
 @given(st.one_of(st.sampled_from(TRICKY), st.text(max_size=10)), st.booleans(), st.booleans())
 def test_memoised_resolve_is_resolve(text: str, plain: bool, quoted: bool) -> None:
-    for memo, base in ((nc._PositionLoader(""), CLOADER),):
+    for memo, base in ((nc._PositionLoader(""), CLOADER), (nc._DUMPER(io.StringIO()), CDUMPER)):
         for _ in range(2):  # computed, then memoised
             got = memo.resolve(yaml.ScalarNode, text, (plain, quoted))
             assert got == base.resolve(memo, yaml.ScalarNode, text, (plain, quoted))

@@ -111,7 +111,9 @@ def _load(text: str, path: str, span_of: Callable[[Any], Span]
     spans: dict[int, dict[Any, tuple[Span, Span]]] = {}
     seen: set[int] = set()
 
-    def walk(n: Any) -> None:
+    # Recursion goes through the ``rec`` argument: a nested function naming itself is a reference
+    # cycle that would keep the loader and its nodes until the cyclic collector runs.
+    def walk(n: Any, rec: Any) -> None:
         if id(n) in seen:
             return
         seen.add(id(n))
@@ -124,15 +126,15 @@ def _load(text: str, path: str, span_of: Callable[[Any], Span]
                     table[key] = (span_of(kn), span_of(vn))
                 except TypeError:  # unhashable key: PyYAML would have failed already
                     continue
-                walk(vn)
+                rec(vn, rec)
         elif isinstance(n, yaml.SequenceNode) and isinstance(obj, list):
             table = spans.setdefault(id(obj), {})
             for i, item in enumerate(n.value):
                 table[i] = (span_of(item), span_of(item))
-                walk(item)
+                rec(item, rec)
 
     if node is not None:
-        walk(node)
+        walk(node, walk)
     return data, spans
 
 
@@ -234,17 +236,17 @@ class _Rewriter:
                     self.substitute_keys(val, rewrites)
 
     def substitute_values(self, data: Any, rewrites: dict[str, str]) -> None:
-        def process(value: Any) -> Any:
+        def process(value: Any, rec: Any) -> Any:  # recursion through ``rec``: no cycle
             if isinstance(value, dict):
                 for k, x in list(value.items()):
-                    new = process(x)
+                    new = rec(x, rec)
                     if new is not x and str(x) in rewrites and not isinstance(x, (dict, list)):
                         self._set(value, k, new, self.rewrite_spans.get("=" + str(x)))
                     else:
                         value[k] = new
                 return value
             if isinstance(value, list):
-                out = [process(x) for x in value]
+                out = [rec(x, rec) for x in value]
                 table = self.spans.get(id(value))
                 if table is not None:
                     self.spans[id(out)] = dict(table)
@@ -254,7 +256,7 @@ class _Rewriter:
             return value
 
         for key in list(data.keys()):
-            data[key] = process(data[key])
+            data[key] = process(data[key], process)
 
 
 # ---- evaluation ---------------------------------------------------------------------------------
@@ -404,7 +406,7 @@ def _loaded_copy(text: str, file: str, virtual: VirtualFile | None
     out_spans: dict[int, dict[Any, tuple[Span, Span]]] = {}
     made: dict[int, Any] = {}
 
-    def copy(obj: Any) -> Any:
+    def copy(obj: Any, rec: Any) -> Any:  # recursion through ``rec``: no reference cycle
         if not isinstance(obj, (dict, list)):
             return obj
         if id(obj) in made:
@@ -413,15 +415,15 @@ def _loaded_copy(text: str, file: str, virtual: VirtualFile | None
         made[id(obj)] = new
         if isinstance(obj, dict):
             for k, x in obj.items():
-                new[k] = copy(x)
+                new[k] = rec(x, rec)
         else:
-            new.extend(copy(x) for x in obj)
+            new.extend(rec(x, rec) for x in obj)
         table = spans.get(id(obj))
         if table is not None:
             out_spans[id(new)] = dict(table)
         return new
 
-    return copy(data), out_spans
+    return copy(data, copy), out_spans
 
 
 # The dumped files of one process repeat the same few thousand scalars (47 rewrites of one
@@ -586,7 +588,7 @@ def _map_positions(vf: VirtualFile, dumped: str, data: Any,
     def at(n: Any) -> tuple[int, int]:
         return n.start_mark.line + 1, n.start_mark.column + 1
 
-    def walk(n: Any, obj: Any) -> None:
+    def walk(n: Any, obj: Any, rec: Any) -> None:  # recursion through ``rec``: no reference cycle
         table = spans.get(id(obj), {})
         if isinstance(n, yaml.MappingNode) and isinstance(obj, dict):
             for kn, vn in n.value:
@@ -599,17 +601,17 @@ def _map_positions(vf: VirtualFile, dumped: str, data: Any,
                 if hit is not None:
                     vf.origin[at(kn)] = hit[0]
                     vf.origin[at(vn)] = hit[1]
-                walk(vn, child)
+                rec(vn, child, rec)
         elif isinstance(n, yaml.SequenceNode) and isinstance(obj, list):
             for i, item in enumerate(n.value):
                 hit = table.get(i)
                 if hit is not None:
                     vf.origin[at(item)] = hit[1]
                 if i < len(obj):
-                    walk(item, obj[i])
+                    rec(item, obj[i], rec)
 
     if node is not None:
-        walk(node, data)
+        walk(node, data, walk)
     loader.dispose()
 
 

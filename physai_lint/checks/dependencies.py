@@ -1,11 +1,11 @@
 """Package dependencies of launch files: U103 missing-exec-depend (ECOSYSTEM §5)."""
 from __future__ import annotations
 
-import dataclasses
 from collections.abc import Iterator
 from typing import Any
 
 from physai_lint.checks.base import CheckContext, rule
+from physai_lint.model.fields import ATOMS, field_names
 from physai_lint.model.findings import Diagnostic
 from physai_lint.model.span import Span
 from physai_lint.model.values import Command, FindPackage, PathJoin, literal_of
@@ -91,32 +91,25 @@ def missing_file(ctx: CheckContext) -> Iterator[Diagnostic]:
 
 
 def _collect_commands(obj: Any, out: list[Command], depth: int = 0) -> None:
-    if depth > 60 or obj is None or type(obj) in _ATOMS:
+    if depth > 60 or type(obj) in ATOMS:
         return
     if isinstance(obj, (tuple, list)):
         for item in obj:
-            if type(item) not in _ATOMS:
+            if type(item) not in ATOMS:
                 _collect_commands(item, out, depth + 1)
         return
     if isinstance(obj, Command):
         out.append(obj)
         return
-    kind = type(obj)
-    names = _FIELDS.get(kind)
-    if names is None:
-        names = _FIELDS[kind] = tuple(
-            f.name for f in dataclasses.fields(obj) if f.name not in ("span", "name_span", "field_spans")
-        ) if dataclasses.is_dataclass(obj) else ()
-    for name in names:
+    for name in field_names(type(obj)):
+        if name in _SPAN_FIELDS:
+            continue
         child = getattr(obj, name)
-        if type(child) not in _ATOMS:
+        if type(child) not in ATOMS:
             _collect_commands(child, out, depth + 1)
 
 
-# Values that hold no Command, and the fields to walk of each dataclass type (fields() per object
-# was half the cost of walking every launch file).
-_ATOMS = frozenset({str, int, float, bool, bytes, type(None)})
-_FIELDS: dict[type, tuple[str, ...]] = {}
+_SPAN_FIELDS = frozenset({"span", "name_span", "field_spans"})
 
 
 def _known_share_path(ctx: CheckContext, join: PathJoin) -> tuple[str, str] | None:

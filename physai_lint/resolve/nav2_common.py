@@ -26,6 +26,7 @@ from typing import TYPE_CHECKING, Any
 import yaml
 
 from physai_lint.model import values as v
+from physai_lint.model.fields import ATOMS, field_names
 from physai_lint.model.span import Span
 
 if TYPE_CHECKING:
@@ -361,7 +362,7 @@ def _rewritten_yaml(ev: Evaluator, p: v.RewrittenYaml, path: str, params: Any, k
             data = {root: data}
             spans[id(data)] = {root: (root_span, root_span)}
         try:
-            dumped = yaml.dump(data, Dumper=_DUMPER)
+            dumped = yaml.dump(data, Dumper=_Dumper)
         except yaml.YAMLError:
             return None
         out = VirtualFile(vpath, dumped, {}, fallback, virtual.source if virtual else file)
@@ -531,7 +532,6 @@ class _Dumper(_BASE_DUMPER):  # type: ignore[misc,valid-type]
         return node
 
 
-_DUMPER = _Dumper
 
 # The temporary files of one process, by everything that decides their text and positions: the
 # same input gives the same file (and the same parsed model) to every entry and every run.
@@ -868,23 +868,20 @@ def _remap(obj: Any, fn: Callable[[Span], Span], memo: dict[int, Any]) -> Any:
     kind = type(obj)
     if kind is Span:
         return fn(obj)
-    if kind in _ATOMS:
+    if kind in ATOMS:
         return obj
     if id(obj) in memo:
         return memo[id(obj)]
     out: Any = obj
     if isinstance(obj, tuple):
-        out = tuple(x if type(x) in _ATOMS else _remap(x, fn, memo) for x in obj)
+        out = tuple(x if type(x) in ATOMS else _remap(x, fn, memo) for x in obj)
     elif isinstance(obj, list):
-        out = [x if type(x) in _ATOMS else _remap(x, fn, memo) for x in obj]
+        out = [x if type(x) in ATOMS else _remap(x, fn, memo) for x in obj]
     elif dataclasses.is_dataclass(obj) and not isinstance(obj, type):
-        names = _FIELD_NAMES.get(kind)
-        if names is None:
-            names = _FIELD_NAMES[kind] = tuple(f.name for f in dataclasses.fields(obj))
         changes = {}
-        for name in names:
+        for name in field_names(kind):
             old = getattr(obj, name)
-            if type(old) in _ATOMS:
+            if type(old) in ATOMS:
                 continue
             new = _remap(old, fn, memo)
             if new is not old:
@@ -898,7 +895,3 @@ def _remap(obj: Any, fn: Callable[[Span], Span], memo: dict[int, Any]) -> Any:
     memo[id(obj)] = out
     return out
 
-
-# Leaves that hold no span: returned as they are, without a memo entry.
-_ATOMS = frozenset({str, int, float, bool, type(None), bytes})
-_FIELD_NAMES: dict[type, tuple[str, ...]] = {}

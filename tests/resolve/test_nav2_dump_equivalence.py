@@ -51,12 +51,12 @@ def _same_dump(value: Any) -> None:
         expected = yaml.dump(value, Dumper=CDUMPER)
     except Exception as exc:  # the fast dumper must fail the same way
         try:
-            yaml.dump(value, Dumper=nc._DUMPER)
+            yaml.dump(value, Dumper=nc._Dumper)
         except Exception as got:  # noqa: BLE001
             assert type(got) is type(exc)
             return
         raise AssertionError(f"CDumper raised {exc!r}, the fast dumper did not") from exc
-    assert yaml.dump(value, Dumper=nc._DUMPER) == expected
+    assert yaml.dump(value, Dumper=nc._Dumper) == expected
 
 
 @settings(max_examples=400, deadline=None, suppress_health_check=[HealthCheck.too_slow])
@@ -87,12 +87,12 @@ def test_fast_dumper_keeps_the_standard_representers() -> None:
     """The fast path spells out these representers: it is only right while they are the ones in
     use (a representer registered for one of these types would be skipped)."""
     sr = yaml.representer.SafeRepresenter
-    table = nc._DUMPER.yaml_representers
+    table = nc._Dumper.yaml_representers
     assert table[str] is sr.represent_str and table[int] is sr.represent_int
     assert table[float] is sr.represent_float and table[bool] is sr.represent_bool
     assert table[type(None)] is sr.represent_none and table[dict] is sr.represent_dict
     assert table[list] is sr.represent_list
-    assert not nc._DUMPER.yaml_path_resolvers and not CLOADER.yaml_path_resolvers
+    assert not nc._Dumper.yaml_path_resolvers and not CLOADER.yaml_path_resolvers
 
 
 # ---- the memoised resolver -----------------------------------------------------------------------
@@ -101,7 +101,7 @@ def test_fast_dumper_keeps_the_standard_representers() -> None:
 @settings(max_examples=300, deadline=None)
 @given(st.one_of(st.sampled_from(TRICKY), st.text(max_size=10)), st.booleans(), st.booleans())
 def test_memoised_resolve_is_resolve(text: str, plain: bool, quoted: bool) -> None:
-    for memo, base in ((nc._PositionLoader(""), CLOADER), (nc._DUMPER(io.StringIO()), CDUMPER)):
+    for memo, base in ((nc._PositionLoader(""), CLOADER), (nc._Dumper(io.StringIO()), CDUMPER)):
         for _ in range(2):  # computed, then memoised
             got = memo.resolve(yaml.ScalarNode, text, (plain, quoted))
             assert got == base.resolve(memo, yaml.ScalarNode, text, (plain, quoted))

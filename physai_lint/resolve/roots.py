@@ -126,15 +126,10 @@ def choose_roots(launch_files: list[str], load: Callable[[str], Any], resolve: C
     by_name: dict[str, list[str]] = {}
     for p in includers:
         by_name.setdefault(posixpath.basename(p), []).append(p)
-    # The guess: which other includers each includer names.
-    names = {p: sorted({q for n in included_names(parsed[p]) for q in by_name.get(n, ()) if q != p})
-             for p in includers}
-    graph = {p: set(qs) for p, qs in names.items()}
-    for p in includers:  # a file naming itself is on a cycle
-        if posixpath.basename(p) in included_names(parsed[p]):
-            graph[p].add(p)
+    # The guess: which includers each includer names (itself included: a cycle of one).
+    graph = {p: {q for n in included_names(parsed[p]) for q in by_name.get(n, ())} for p in includers}
     cyclic = _on_cycle(graph)
-    guessed = {q for p, qs in names.items() if p not in cyclic for q in qs} - cyclic
+    guessed = {q for p, qs in graph.items() if p not in cyclic for q in qs if q != p} - cyclic
     by_entry: dict[str, Any] = {p: resolve(p) for p in includers if p not in guessed}
     included = {f for r in by_entry.values() for f in r.files[1:] if f != r.entry}
     for p in sorted(guessed):  # guesses that did not come true, includers by path

@@ -249,7 +249,7 @@ class _Interp:
                 return
             sub = sub.rstrip("/")
             path = os.path.join(sub, "CMakeLists.txt")
-            text = _read(path)
+            text = read_listfile(path)
             self.reads.append((path, text))
             if text is None:
                 return
@@ -472,16 +472,13 @@ def _split_opts(a: list[str], keys: set[str]) -> tuple[list[str], dict[str, list
     return items, opts
 
 
-def _read(path: str) -> str | None:
+def read_listfile(path: str) -> str | None:
     """A CMake file's text as the reader reads it (``read_cmake_package(reads=...)`` names them)."""
     try:
         with open(path, encoding="utf-8", errors="replace") as fh:
             return fh.read()
     except OSError:
         return None
-
-
-read_listfile = _read
 
 
 def read_cmake_package(pkg_dir: str, pkg_name: str, text: str | None = None,
@@ -492,7 +489,7 @@ def read_cmake_package(pkg_dir: str, pkg_name: str, text: str | None = None,
     info = BuildInfo()
     path = pkg_dir + "/CMakeLists.txt"
     if text is None:
-        text = _read(path)
+        text = read_listfile(path)
     if text is None:
         info.complete = info.executables_complete = False
         info.problems.append((path, "CMakeLists.txt not found", 1))

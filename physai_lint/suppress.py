@@ -17,6 +17,7 @@ from dataclasses import dataclass
 from typing import Any, Callable, Literal, Mapping
 
 from physai_lint.model.findings import Diagnostic, Finding
+from physai_lint.model.pickling import fast_pickle_module
 from physai_lint.model.span import Span
 
 Format = Literal["python", "xml", "yaml"]
@@ -168,3 +169,6 @@ def _unknown(d: Directive, token: str, catalog: Mapping[str, Any], names: Mappin
     hint = suggest(token, [*catalog, *names])
     help = f'did you mean "{hint}"?' if hint else "use a rule code such as \"N101\" or a rule name"
     return _invalid(d, f'unknown rule "{token}" in suppression comment', help, key=token)
+
+
+fast_pickle_module(globals())  # tuples instead of dataclasses.fields() per object (model/pickling.py)

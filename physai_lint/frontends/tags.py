@@ -9,6 +9,7 @@ import difflib
 from dataclasses import dataclass
 
 from physai_lint.model.launch import MarkupFacts
+from physai_lint.model.pickling import fast_pickle_module
 from physai_lint.model.span import Span
 
 
@@ -123,3 +124,6 @@ def unknown_markup(facts: MarkupFacts) -> list[tuple[Span, str, str | None]]:
             hint = _HINTS.get((tag, name)) or _suggest(name, spec.attributes)
             out.append((name_span, f'unknown attribute "{name}" on "{tag}"', hint))
     return out
+
+
+fast_pickle_module(globals())  # tuples instead of dataclasses.fields() per object (model/pickling.py)

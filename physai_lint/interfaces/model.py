@@ -4,6 +4,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any, Literal
 
+from physai_lint.model.pickling import fast_pickle_module
 from physai_lint.model.span import Span
 
 ParamType = Literal[
@@ -73,3 +74,6 @@ class NodeInterface:
 
 ENDPOINT_KINDS = ("publishers", "subscribers", "services", "clients", "action_servers",
                   "action_clients")
+
+
+fast_pickle_module(globals())  # tuples instead of dataclasses.fields() per object (model/pickling.py)

@@ -9,6 +9,8 @@ import hashlib
 from dataclasses import dataclass
 from typing import Literal
 
+from physai_lint.model.pickling import fast_pickle_module
+
 from .span import Span
 
 Severity = Literal["error", "warning", "note"]
@@ -65,3 +67,6 @@ class Finding:
         what = self.key or "".join(ch for ch in self.message if not ch.isdigit())
         raw = f"{self.code}\0{relpath}\0{what}"
         return hashlib.sha256(raw.encode("utf-8")).hexdigest()[:20]
+
+
+fast_pickle_module(globals())  # tuples instead of dataclasses.fields() per object (model/pickling.py)

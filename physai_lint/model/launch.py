@@ -12,6 +12,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Literal, Union
 
+from physai_lint.model.pickling import fast_pickle_module
+
 from .span import Span
 from .values import PValue, Value
 
@@ -353,3 +355,6 @@ class LaunchFile:
     markup: MarkupFacts | None = None
     # Workspace files the frontend read statically (yaml.safe_load of a config, sibling modules).
     read_files: tuple[str, ...] = field(default_factory=tuple)
+
+
+fast_pickle_module(globals())  # tuples instead of dataclasses.fields() per object (model/pickling.py)

@@ -3,6 +3,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from physai_lint.model.pickling import fast_pickle_module
+
 
 @dataclass(frozen=True, slots=True, order=True)
 class Span:
@@ -27,3 +29,6 @@ class Span:
 
     def with_file(self, file: str) -> "Span":
         return Span(file, self.line, self.col, self.end_line, self.end_col)
+
+
+fast_pickle_module(globals())  # tuples instead of dataclasses.fields() per object (model/pickling.py)

@@ -9,6 +9,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Literal, Union
 
+from physai_lint.model.pickling import fast_pickle_module
+
 from .span import Span
 
 
@@ -319,3 +321,6 @@ class PUnknown:
 
 
 PValue = Union[PLit, PSubst, PList, PUnknown]
+
+
+fast_pickle_module(globals())  # tuples instead of dataclasses.fields() per object (model/pickling.py)

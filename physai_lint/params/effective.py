@@ -12,6 +12,7 @@ import math
 from dataclasses import dataclass, field
 from typing import Any, Mapping
 
+from physai_lint.model.pickling import fast_pickle_module
 from physai_lint.model.span import Span
 from physai_lint.resolve.model import (
     ParamSourceR,
@@ -285,3 +286,6 @@ def matching_keys(fqn: str, model: ParamFileModel, composable: bool = False) -> 
 def file_binds(fqn: str, model: ParamFileModel, composable: bool = False) -> bool:
     """Does any block of the file apply to the node?"""
     return bool(matching_keys(fqn, model, composable))
+
+
+fast_pickle_module(globals())  # tuples instead of dataclasses.fields() per object (model/pickling.py)

@@ -11,6 +11,7 @@ from dataclasses import dataclass, field
 from typing import Any, Literal, Union
 
 from physai_lint.model.findings import Diagnostic
+from physai_lint.model.pickling import fast_pickle_module
 from physai_lint.model.span import Span
 
 # Kinds of a parameter value in a params file (rcl never makes byte arrays from YAML).
@@ -84,3 +85,6 @@ class ParamFileModel:
 def is_param_file(model: ParamFileModel) -> bool:
     """A params file has a key starting with ``ros__parameters`` somewhere."""
     return model.has_ros_parameters
+
+
+fast_pickle_module(globals())  # tuples instead of dataclasses.fields() per object (model/pickling.py)

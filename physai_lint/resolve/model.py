@@ -9,6 +9,7 @@ from typing import Any, Literal, Union
 
 from physai_lint.model.findings import Diagnostic
 from physai_lint.model.launch import ComposableNode, NodeAction
+from physai_lint.model.pickling import fast_pickle_module
 from physai_lint.model.span import Span
 
 Activity = Union[bool, None]  # True, False, or None for unknown
@@ -207,3 +208,6 @@ class LaunchResult:
     delays: dict[str, float | None] = field(default_factory=dict)
     # Conditions that can never be true (or never false): (span, explanation)
     dead_conditions: list[tuple[Span, str]] = field(default_factory=list)
+
+
+fast_pickle_module(globals())  # tuples instead of dataclasses.fields() per object (model/pickling.py)

@@ -16,6 +16,8 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
+from physai_lint.model.pickling import fast_pickle_module
+
 MAX_EXPR_CHARS = 10_000
 MAX_ELEMENTS = 10**6
 MAX_DEPTH = 100
@@ -313,3 +315,6 @@ def safe_eval(expr: str, modules: tuple[str, ...] = ("math",)) -> object | SafeE
     except (ArithmeticError, ValueError, TypeError, LookupError, RecursionError,
             MemoryError) as err:
         return SafeEvalUnknown(f"evaluation failed: {type(err).__name__}: {err}")
+
+
+fast_pickle_module(globals())  # tuples instead of dataclasses.fields() per object (model/pickling.py)

@@ -1,0 +1,84 @@
+"""Frozen, slotted model dataclasses pickle as tuples (model/pickling.py): parse results, cache
+entries and findings from forked rule groups must come back equal, of the same class."""
+from __future__ import annotations
+
+import copy
+import dataclasses
+import pickle
+from pathlib import Path
+
+from physai_lint.files import Job, run_job
+from physai_lint.model import launch, pickling, span, values
+from physai_lint.model.pickling import fast_pickle
+
+EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
+
+
+def _walk(obj: object, seen: set[int]) -> list[object]:
+    """Every dataclass instance reachable from ``obj``."""
+    if id(obj) in seen:
+        return []
+    seen.add(id(obj))
+    out: list[object] = []
+    if dataclasses.is_dataclass(obj) and not isinstance(obj, type):
+        out.append(obj)
+        for f in dataclasses.fields(obj):
+            out += _walk(getattr(obj, f.name), seen)
+    elif isinstance(obj, dict):
+        for k, v in obj.items():
+            out += _walk(k, seen) + _walk(v, seen)
+    elif isinstance(obj, (list, tuple, set, frozenset)):
+        for v in obj:
+            out += _walk(v, seen)
+    return out
+
+
+def test_parse_results_of_the_examples_round_trip() -> None:
+    paths = sorted(p for p in EXAMPLES.rglob("*") if p.is_file() and p.name.endswith(
+        (".launch.py", ".launch.xml", ".launch.yaml", ".yaml")))
+    assert paths
+    kinds: set[type] = set()
+    for path in paths:
+        text = path.read_text()
+        kind = "launch" if ".launch." in path.name else "params"
+        value, _ = run_job(Job(kind, str(path), text, "humble"), None)
+        back = pickle.loads(pickle.dumps(value, protocol=pickle.HIGHEST_PROTOCOL))
+        assert back == value
+        for a, b in zip(_walk(value, set()), _walk(back, set())):
+            assert type(a) is type(b)
+            kinds.add(type(a))
+    assert span.Span in kinds and launch.NodeAction in kinds  # the walk saw the model
+
+
+def test_every_frozen_slotted_model_class_pickles_through_the_tuple_reduce() -> None:
+    for module in (span, launch, values):
+        for obj in vars(module).values():
+            if isinstance(obj, type) and dataclasses.is_dataclass(obj) and \
+                    obj.__module__ == module.__name__ and obj.__dataclass_params__.frozen:  # type: ignore[attr-defined]
+                assert obj.__reduce__ is pickling._reduce, obj
+
+
+def test_a_subclass_keeps_its_own_fields_and_copies_work() -> None:
+    @fast_pickle
+    @dataclasses.dataclass(frozen=True, slots=True)
+    class Base:
+        a: int
+        b: str = "x"
+
+    @dataclasses.dataclass(frozen=True, slots=True)
+    class Child(Base):  # not given fast_pickle itself: inherits the reduce, not the base's shape
+        c: tuple[int, ...] = ()
+
+    globals()["Base"], globals()["Child"] = Base, Child  # picklable by qualified name
+    Base.__qualname__, Child.__qualname__ = "Base", "Child"
+    try:
+        obj = Child(1, "y", (2, 3))
+        back = pickle.loads(pickle.dumps(obj))
+        assert back == obj and type(back) is Child
+        assert copy.copy(obj) == obj and copy.deepcopy(obj) == obj
+        s = span.Span("/a.py", 1, 2, 3, 4)
+        assert pickle.loads(pickle.dumps([s, s]))[0] is not s
+        both = pickle.loads(pickle.dumps([s, s]))
+        assert both[0] is both[1]  # shared objects stay shared
+    finally:
+        del globals()["Base"], globals()["Child"]

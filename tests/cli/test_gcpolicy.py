@@ -39,3 +39,16 @@ def test_the_library_keeps_the_collector_on() -> None:
     assert gc.isenabled()
     gcpolicy.parsing_done()  # outside a command-line run: nothing changes
     assert gc.isenabled()
+
+
+def test_a_process_about_to_end_is_left_as_the_run_left_it(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setitem(gcpolicy._state, "ending", True)  # what cli.entry says before os._exit
+    before = gc.get_threshold()
+    try:
+        with gcpolicy.for_run():
+            gcpolicy.parsing_done()
+        # re-enabling would make the next collection walk every object of the run
+        assert not gc.isenabled() and gc.get_threshold() == (50_000, 1_000, 1_000)
+    finally:
+        gc.set_threshold(*before)
+        gc.enable()

@@ -148,7 +148,8 @@ def test_suggest(idx):
     assert idx.suggest("py_pgk")[0] == "py_pkg"
     assert "moveit_ros_move_group" in idx.suggest("moveit_ros_movegroup")
     names = idx.package_names()
-    assert names == sorted(names) and "py_pkg" in names and "rclcpp" in names
+    assert list(names) == sorted(set(names)) and "py_pkg" in names and "rclcpp" in names
+    assert idx.package_names() is names  # one tuple while the names stay the same
 
 
 def _fake_prefix(root, name, exes=(), plugins=()):

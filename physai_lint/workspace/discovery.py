@@ -40,6 +40,17 @@ class Discovery:
     explicit: list[str] = field(default_factory=list)
 
 
+def dir_identity(path: str) -> tuple[int, int] | None:
+    """What a directory is, whatever path (symlinks included) reaches it: its device and inode, or
+    None when it cannot be read. The walkers visit each directory once by it; ``os.path.realpath``
+    did the same at one ``lstat`` per path component, in Python (a third of a walk's time)."""
+    try:
+        st = os.stat(path)
+    except (OSError, ValueError):
+        return None
+    return st.st_dev, st.st_ino
+
+
 def is_launch_file(name: str) -> bool:
     """ros2launch ``is_launch_file``: ``x.launch.py`` and ``x_launch.py`` both count."""
     return name.endswith(LAUNCH_SUFFIXES)
@@ -181,7 +192,7 @@ def discover(paths: list[str], respect_gitignore: bool = True) -> Discovery:
     manifests: set[str] = set()
     explicit: set[str] = set()
     gi = GitIgnore() if respect_gitignore else None
-    seen_real: set[str] = set()
+    seen_real: set[tuple[int, int]] = set()
 
     def classify(path: str, name: str, forced: bool) -> None:
         if is_launch_file(name):
@@ -193,11 +204,8 @@ def discover(paths: list[str], respect_gitignore: bool = True) -> Discovery:
             manifests.add(path)
 
     def walk(dirpath: str) -> None:
-        try:
-            real = os.path.realpath(dirpath)
-        except OSError:
-            return
-        if real in seen_real:
+        real = dir_identity(dirpath)
+        if real is None or real in seen_real:
             return
         seen_real.add(real)
         try:

@@ -16,7 +16,7 @@ from typing import Any, Literal
 from ._glob import compile_glob
 from ._model import BuildInfo, InstallRule
 from .cmake import read_cmake_package, read_listfile
-from .discovery import UsageError, has_ignore_marker, skip_dir_name
+from .discovery import UsageError, dir_identity, has_ignore_marker, skip_dir_name
 from .distro import DISTROS, released_packages
 from .package_xml import _NAME_RX, ManifestInfo, parse_manifest
 from .setup_py import read_setup_py
@@ -450,14 +450,11 @@ def _find_packages(root: str) -> list[str]:
     """Directories below ``root`` holding a package.xml, the way colcon crawls: ignore markers skip
     a directory and everything below; a package's subdirectories hold no further packages."""
     found: list[str] = []
-    seen: set[str] = set()
+    seen: set[tuple[int, int]] = set()
 
     def walk(d: str) -> None:
-        try:
-            real = os.path.realpath(d)
-        except OSError:
-            return
-        if real in seen:
+        real = dir_identity(d)
+        if real is None or real in seen:
             return
         seen.add(real)
         try:
@@ -486,15 +483,12 @@ def _find_packages(root: str) -> list[str]:
 def _snapshot(pkg_dir: str) -> tuple[frozenset[str], frozenset[str]]:
     files: set[str] = set()
     dirs: set[str] = set()
-    seen: set[str] = set()
+    seen: set[tuple[int, int]] = set()
     stack = [("", pkg_dir)]
     while stack and len(files) < SNAPSHOT_LIMIT:
         rel, d = stack.pop()
-        try:
-            real = os.path.realpath(d)
-        except OSError:
-            continue
-        if real in seen:
+        real = dir_identity(d)
+        if real is None or real in seen:
             continue
         seen.add(real)
         try:

@@ -348,8 +348,9 @@ def _call_args(toks: list[Tok], i: int) -> tuple[list[list[Tok]], int] | None:
 def _constants(toks: list[Tok]) -> dict[str, str]:
     """``NAME = "literal";`` / ``NAME[] = "literal";`` / ``NAME{"literal"}`` / ``#define``."""
     out: dict[str, str] = {}
-    for j, t in enumerate(toks):
-        if t.kind != "str" or j < 2:
+    for j in [j for j, t in enumerate(toks) if t[0] == "str"]:
+        t = toks[j]
+        if j < 2:
             continue
         nxt = toks[j + 1].text if j + 1 < len(toks) else ";"
         if nxt not in (";", "}", ")"):
@@ -529,8 +530,8 @@ def _span(path: str, t: Tok | None) -> Span | None:
 def _read_only_descriptors(toks: list[Tok]) -> set[str]:
     """Variables given ``NAME.read_only = true`` (or ``->``) in the file."""
     out: set[str] = set()
-    for j in range(2, len(toks) - 2):
-        if toks[j].text == "read_only" and toks[j - 1].text in (".", "->") and \
+    for j in [j for j, t in enumerate(toks) if t[1] == "read_only" and 2 <= j < len(toks) - 2]:
+        if toks[j - 1].text in (".", "->") and \
                 toks[j + 1].text == "=" and toks[j + 2].text == "true" and toks[j - 2].kind == "id":
             out.add(toks[j - 2].text)
     return out
@@ -568,13 +569,21 @@ _TF_ENDPOINTS = {
 }
 
 
+# every name a branch of _extract_one's loop acts on
+_LOOP_NAMES = frozenset(_TF_ENDPOINTS) | frozenset(_ENDPOINT_CALLS) | {
+    "create_server", "advertise", "subscribe", "advertiseCamera", "subscribeCamera",
+    "declare_parameter", "declare_parameter_if_not_declared", "declare_or_get_parameter"}
+
+
 def _extract_one(path: str, text: str, iface: NodeInterface) -> None:
     if not _CALL_WORDS.search(text):
         return
     toks = _tokens(text)
     consts = _constants(toks)
     read_only = _read_only_descriptors(toks)
-    for i, t in enumerate(toks):
+    # only the identifiers a branch below asks about (a comprehension over the list, not a loop)
+    for i in [i for i, t in enumerate(toks) if t[1] in _LOOP_NAMES]:
+        t = toks[i]
         if t.kind != "id":
             continue
         name = t.text

@@ -14,13 +14,13 @@ _VERB = {"on_process_start": "start", "on_process_exit": "exit", "on_execution_c
 
 @rule("S101", "startup-cycle")
 def startup_cycle(ctx: CheckContext) -> Iterator[Diagnostic]:
-    from physai_lint.graph.plan import build_plan
+    from physai_lint.graph.plan import startup_cycles
 
     seen: set[object] = set()
     for launch in ctx.launches:
         if not launch.edges:
             continue
-        plan = build_plan(launch, None, lambda n: effective(ctx, n))
+        plan = startup_cycles(launch, lambda n: effective(ctx, n))
         labels = plan.labels
         for cyc in plan.cycles:
             if not cyc.deadlock:

@@ -36,6 +36,8 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
+from physai_lint.resolve.roots import nodes_on_cycles
+
 if TYPE_CHECKING:
     from physai_lint.graph.system import SystemGraph
     from physai_lint.model.span import Span
@@ -274,8 +276,9 @@ def _startable(vertices: set[str], hard: list[PlanEdge], active: dict[str, bool 
 
 
 def _skeleton(launch: LaunchResult, effective_params: Callable[[NodeInstance], dict[str, Any]]
-              ) -> tuple[Plan, list[NodeInstance], set[str], list[PlanEdge]]:
-    """The plan's vertices and its hard edges (first reason per pair), before any graph work."""
+              ) -> tuple[Plan, set[str], list[PlanEdge], set[str]]:
+    """The plan's vertices, ``never_starts``, the vertex ids, the hard edges (first reason per
+    pair) and the startable vertices: everything before any graph work."""
     nodes = [n for n in launch.nodes if n.active is not False]
     labels = _labels(nodes)
     plan = Plan(launch.entry, never_started=list(launch.never_started))
@@ -296,13 +299,13 @@ def _skeleton(launch: LaunchResult, effective_params: Callable[[NodeInstance], d
                 (e.before, e.after) == (h.before, h.after) for h in hard):
             seen.add((e.before, e.after, e.reason))
             hard.append(e)
-    return plan, nodes, ids, hard
+    startable = _startable(ids, hard, {n.id: n.active for n in nodes})
+    plan.never_starts = ids - startable
+    return plan, ids, hard, startable
 
 
-def _cycles(plan: Plan, nodes: list[NodeInstance], ids: set[str], hard: list[PlanEdge],
-            nx: Any) -> Any:
-    """Fill ``plan.never_starts``, ``plan.cycles`` (and ``cycles_truncated``); return the hard
-    edges' networkx graph."""
+def _cycles(plan: Plan, ids: set[str], hard: list[PlanEdge], startable: set[str], nx: Any) -> Any:
+    """Fill ``plan.cycles`` (and ``cycles_truncated``); return the hard edges' networkx graph."""
     H = nx.DiGraph()
     H.add_nodes_from(sorted(ids, key=_natural))
     first_edge: dict[tuple[str, str], PlanEdge] = {}
@@ -310,8 +313,6 @@ def _cycles(plan: Plan, nodes: list[NodeInstance], ids: set[str], hard: list[Pla
         H.add_edge(e.before, e.after)
         first_edge.setdefault((e.before, e.after), e)
 
-    startable = _startable(ids, hard, {n.id: n.active for n in nodes})
-    plan.never_starts = ids - startable
     found: list[PlanCycle] = []
     for cyc in nx.simple_cycles(H):
         if len(found) >= MAX_CYCLES:
@@ -327,30 +328,11 @@ def _cycles(plan: Plan, nodes: list[NodeInstance], ids: set[str], hard: list[Pla
 
 
 def _has_cycle(hard: list[PlanEdge]) -> bool:
-    """Do the hard edges close a cycle (a self-loop included)? Depth first, iteratively."""
-    succ: dict[str, list[str]] = {}
+    """Do the hard edges close a cycle (a self-loop included)?"""
+    succ: dict[str, set[str]] = {}
     for e in hard:
-        succ.setdefault(e.before, []).append(e.after)
-    state: dict[str, int] = {}  # 1: on the current path, 2: done
-    for root, nexts in succ.items():
-        if root in state:
-            continue
-        state[root] = 1
-        stack = [(root, iter(nexts))]
-        while stack:
-            v, it = stack[-1]
-            for w in it:
-                mark = state.get(w)
-                if mark == 1:
-                    return True
-                if mark is None:
-                    state[w] = 1
-                    stack.append((w, iter(succ.get(w, ()))))
-                    break
-            else:
-                state[v] = 2
-                stack.pop()
-    return False
+        succ.setdefault(e.before, set()).add(e.after)
+    return bool(nodes_on_cycles(succ))
 
 
 def startup_cycles(launch: LaunchResult,
@@ -358,13 +340,12 @@ def startup_cycles(launch: LaunchResult,
     """What S101 reads of ``build_plan``: the vertices, ``never_starts`` and the cycles (stages,
     edges and the critical path are left empty). When the hard edges close no cycle there is none
     to list, and networkx (0.08-0.15 s to import, the costliest import of a run) is not needed."""
-    plan, nodes, ids, hard = _skeleton(launch, effective_params)
+    plan, ids, hard, startable = _skeleton(launch, effective_params)
     if not _has_cycle(hard):
-        plan.never_starts = ids - _startable(ids, hard, {n.id: n.active for n in nodes})
         return plan
     import networkx as nx  # type: ignore[import-untyped]
 
-    _cycles(plan, nodes, ids, hard, nx)
+    _cycles(plan, ids, hard, startable, nx)
     return plan
 
 
@@ -372,9 +353,9 @@ def build_plan(launch: LaunchResult, graph: SystemGraph | None,
                effective_params: Callable[[NodeInstance], dict[str, Any]]) -> Plan:
     import networkx as nx
 
-    plan, nodes, ids, hard = _skeleton(launch, effective_params)
+    plan, ids, hard, startable = _skeleton(launch, effective_params)
     # ---- cycles among hard edges ------------------------------------------------------------------
-    H = _cycles(plan, nodes, ids, hard, nx)
+    H = _cycles(plan, ids, hard, startable, nx)
 
     # ---- stages from the hard edges (condensed); soft edges are shown, never move a stage -------------
     cond = nx.condensation(H)

@@ -67,7 +67,7 @@ def included_names(lf: Any) -> set[str]:
     return out
 
 
-def _on_cycle(graph: dict[str, set[str]]) -> set[str]:
+def nodes_on_cycles(graph: dict[str, set[str]]) -> set[str]:
     """Nodes of ``graph`` on a cycle (strongly connected components larger than one, self-loops)."""
     index: dict[str, int] = {}
     low: dict[str, int] = {}
@@ -128,7 +128,7 @@ def choose_roots(launch_files: list[str], load: Callable[[str], Any], resolve: C
         by_name.setdefault(posixpath.basename(p), []).append(p)
     # The guess: which includers each includer names (itself included: a cycle of one).
     graph = {p: {q for n in included_names(parsed[p]) for q in by_name.get(n, ())} for p in includers}
-    cyclic = _on_cycle(graph)
+    cyclic = nodes_on_cycles(graph)
     guessed = {q for p, qs in graph.items() if p not in cyclic for q in qs if q != p} - cyclic
     by_entry: dict[str, Any] = {p: resolve(p) for p in includers if p not in guessed}
     included = {f for r in by_entry.values() for f in r.files[1:] if f != r.entry}

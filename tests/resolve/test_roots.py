@@ -9,7 +9,7 @@ from hypothesis import strategies as st
 
 from physai_lint.engine import CheckOptions, build_project
 from physai_lint.resolve import instantiate
-from physai_lint.resolve.roots import _on_cycle, included_names
+from physai_lint.resolve.roots import included_names, nodes_on_cycles
 
 
 def _node(name: str) -> str:
@@ -129,4 +129,4 @@ def test_on_cycle_matches_networkx(edges):
     g.add_edges_from((a, b) for a, bs in graph.items() for b in bs)
     expected = {n for comp in nx.strongly_connected_components(g) for n in comp
                 if len(comp) > 1 or g.has_edge(n, n)}
-    assert _on_cycle(graph) == expected
+    assert nodes_on_cycles(graph) == expected

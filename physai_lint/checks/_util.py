@@ -10,22 +10,7 @@ from physai_lint.resolve.model import LaunchResult, NodeInstance
 
 
 def did_you_mean(name: str, candidates: Iterable[str], n: int = 3, cutoff: float = 0.6) -> list[str]:
-    return list(close_matches(name, _prepared(candidates), n, cutoff))
-
-
-_LAST: list[tuple[object, tuple[str, ...]]] = []  # (the candidates object, its sorted unique names)
-
-
-def _prepared(candidates: Iterable[str]) -> tuple[str, ...]:
-    """The sorted, unique candidates; for a tuple asked about again and again (the package names
-    of the index, once per unknown package), sorted once. The entry holds the tuple itself, so
-    the identity check cannot match a different object at a recycled address."""
-    if type(candidates) is tuple and _LAST and _LAST[0][0] is candidates:
-        return _LAST[0][1]
-    prepared = tuple(sorted(set(candidates)))
-    if type(candidates) is tuple:
-        _LAST[:] = [(candidates, prepared)]
-    return prepared
+    return list(close_matches(name, tuple(sorted(set(candidates))), n, cutoff))
 
 
 def suggestion(name: str, candidates: Iterable[str]) -> str:

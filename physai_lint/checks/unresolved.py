@@ -5,6 +5,7 @@ from typing import Iterator
 
 from physai_lint.checks._util import all_nodes, did_you_mean
 from physai_lint.checks.base import CheckContext, rule
+from physai_lint.closematch import close_matches
 from physai_lint.model.findings import Diagnostic
 
 # Executables that people mistake for packages: the package that really provides them.
@@ -36,7 +37,8 @@ def _package_help(ctx: CheckContext, name: str, executable: str | None) -> tuple
     home = KNOWN_EXECUTABLE_HOMES.get(executable or "") or KNOWN_EXECUTABLE_HOMES.get(name)
     if home and ctx.packages.has_package(home):
         hints.append(f'the "{executable or name}" executable is provided by package "{home}"')
-    close = [c for c in did_you_mean(name, ctx.packages.package_names()) if c != home]
+    # package_names() is sorted and unique already (one tuple per run): no preparing it per finding
+    close = [c for c in close_matches(name, ctx.packages.package_names(), 3, 0.6) if c != home]
     if close:
         hints.append("did you mean " + " or ".join(f'"{c}"' for c in close) + "?")
     extra = ("; " + "; ".join(hints)) if hints else ""

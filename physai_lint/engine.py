@@ -91,14 +91,14 @@ def build_project(opts: CheckOptions, cwd: str | None = None, progress: Any = No
     cache = ParseCache.open(opts.cache)  # parse results, package reading, C++ extraction
     packages = ws.build_package_index(root, opts.distro, os.environ.get("AMENT_PREFIX_PATH"), scope,
                                       cache=cache)
-    from physai_lint.parallel import default_jobs
+    from physai_lint.parallel import default_jobs, resolve_entries
     from physai_lint.progress import Progress
 
     progress = progress or Progress(False)
     store = FileStore(cache=cache)
+    jobs = opts.jobs or default_jobs()
     # Parse every discovered file once, up front: from the disk cache, else in --jobs workers.
-    store.preload(found.launch_files, found.param_files, opts.distro, opts.jobs or default_jobs(),
-                  progress)
+    store.preload(found.launch_files, found.param_files, opts.distro, jobs, progress)
     gcpolicy.parsing_done()
     diagnostics: list[Diagnostic] = []
 
@@ -108,13 +108,21 @@ def build_project(opts: CheckOptions, cwd: str | None = None, progress: Any = No
     explicit = set(found.explicit)
     launch_files = list(found.launch_files)
 
-    def resolve(entry: str) -> Any:
-        progress.advance()
+    def resolve_quiet(entry: str) -> Any:
         return resolve_launch(entry, dict(opts.launch_args), loader, packages,
                               explicit_entry=entry in explicit)
 
+    def resolve(entry: str) -> Any:
+        progress.advance()
+        return resolve_quiet(entry)
+
+    def resolve_many(entries: list[str]) -> list[Any]:
+        # with --jobs, a forked helper takes a share (physai_lint/parallel.py)
+        return resolve_entries(entries, resolve_quiet, store, loader, jobs, progress,
+                               files=len(store.launches) + len(store.params))
+
     progress.stage("resolving", len(launch_files))
-    launches = choose_roots(launch_files, loader, resolve, progress.advance)
+    launches = choose_roots(launch_files, loader, resolve, progress.advance, resolve_many)
     targets = set(paths) | set(found.launch_files) | set(found.param_files)
     for r in launches:
         if r.entry in explicit or any(r.entry.startswith(p.rstrip("/") + "/") for p in paths) or \

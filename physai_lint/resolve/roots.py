@@ -117,9 +117,13 @@ def nodes_on_cycles(graph: dict[str, set[str]]) -> set[str]:
 
 
 def choose_roots(launch_files: list[str], load: Callable[[str], Any], resolve: Callable[[str], Any],
-                 advance: Callable[[int], None]) -> list[Any]:
+                 advance: Callable[[int], None],
+                 resolve_many: Callable[[list[str]], list[Any]] | None = None) -> list[Any]:
     """The resolved roots, in the order of ``launch_files``. ``resolve(path)`` resolves one entry;
-    ``advance(n)`` counts entries that were settled without resolving them."""
+    ``resolve_many(paths)`` resolves several independent ones, in order (in parallel with
+    ``--jobs``; by default one after the other); ``advance(n)`` counts entries that were settled
+    without resolving them."""
+    many = resolve_many or (lambda paths: [resolve(p) for p in paths])
     parsed = {p: load(p) for p in launch_files}
     leaves = {p for p in launch_files if not has_include(parsed[p])}
     includers = [p for p in launch_files if p not in leaves]
@@ -130,17 +134,20 @@ def choose_roots(launch_files: list[str], load: Callable[[str], Any], resolve: C
     graph = {p: {q for n in included_names(parsed[p]) for q in by_name.get(n, ())} for p in includers}
     cyclic = nodes_on_cycles(graph)
     guessed = {q for p, qs in graph.items() if p not in cyclic for q in qs if q != p} - cyclic
-    by_entry: dict[str, Any] = {p: resolve(p) for p in includers if p not in guessed}
+    first = [p for p in includers if p not in guessed]
+    by_entry: dict[str, Any] = dict(zip(first, many(first)))
     included = {f for r in by_entry.values() for f in r.files[1:] if f != r.entry}
     for p in sorted(guessed):  # guesses that did not come true, includers by path
         if p in included:
             continue
         r = by_entry[p] = resolve(p)
         included.update(f for f in r.files[1:] if f != r.entry)
-    by_entry.update((p, resolve(p)) for p in sorted(leaves - included))
+    alone = sorted(leaves - included)
+    by_entry.update(zip(alone, many(alone)))
     launches = [by_entry[p] for p in launch_files if p in by_entry and p not in included]
     if not launches:  # every file is included by another (include cycles): all of them are roots
-        by_entry.update((p, resolve(p)) for p in sorted(set(launch_files) - set(by_entry)))
+        rest = sorted(set(launch_files) - set(by_entry))
+        by_entry.update(zip(rest, many(rest)))
         return [by_entry[p] for p in launch_files]
     advance(len(set(launch_files) - set(by_entry)))  # settled without resolving them
     return launches

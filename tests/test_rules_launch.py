@@ -73,3 +73,30 @@ def test_good_is_quiet(case: Path) -> None:
     code = case.name.split("-", 1)[0]
     got = _run(case / "good")
     assert not [g for g in got if g[0] == code], got
+
+
+@pytest.mark.parametrize("name, text", [
+    ("a.launch.yaml", ("launch:\n- node:\n    pkg: demo_nodes_cpp\n    exec: talker\n"
+                       '    args: "--dir $(launch_log_dir) --old $(log_dir)"\n')),
+    ("a.launch.py", ("from launch import LaunchDescription\nfrom launch.substitutions import LaunchLogDir\n"
+                     "from launch_ros.actions import Node\n\n\ndef generate_launch_description():\n"
+                     "    return LaunchDescription([\n"
+                     "        Node(package='demo_nodes_cpp', executable='talker', arguments=[LaunchLogDir()]),\n"
+                     "    ])\n")),
+])
+def test_launch_log_dir_is_newer_than_humble_and_log_dir_is_not(tmp_path: Path, name: str, text: str) -> None:
+    """``$(launch_log_dir)`` / ``LaunchLogDir`` came with iron; humble exposes only ``log_dir``."""
+    path = tmp_path / name
+    path.write_text(text)
+    found = {}
+    for distro in ("humble", "jazzy"):
+        report = run_check(CheckOptions(paths=[str(path)], distro=distro, cache=False), cwd=str(tmp_path))
+        found[distro] = [(f.span.line, f.message, f.help) for f in report.findings if f.code == "L114"]
+    assert found["jazzy"] == []
+    assert len(found["humble"]) == 1
+    line, message, help_ = found["humble"][0]
+    assert "(added in iron)" in message
+    if name.endswith(".yaml"):
+        assert line == 5 and '"$(launch_log_dir)"' in message and "$(log_dir)" in help_
+    else:
+        assert line == 8 and message.startswith("LaunchLogDir does not exist in launch on humble")

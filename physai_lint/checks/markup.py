@@ -6,10 +6,10 @@ from collections.abc import Iterator
 from typing import Any
 
 from physai_lint.checks.base import CheckContext, rule
-from physai_lint.frontends.substitutions import DISTRO_ONLY_SUBSTITUTIONS
+from physai_lint.frontends.substitutions import DISTRO_ONLY_SUBSTITUTIONS, LAUNCH_LOG_DIR_REASON
 from physai_lint.frontends.tags import unknown_markup
 from physai_lint.model.findings import Diagnostic
-from physai_lint.model.values import BoolOp, Compare, FileContent, IfElse
+from physai_lint.model.values import BoolOp, Compare, FileContent, IfElse, Unknown
 
 
 @rule("L002", "unknown-attribute")
@@ -31,15 +31,17 @@ def unknown_attribute(ctx: CheckContext) -> Iterator[Diagnostic]:
                 help=help_, key=message)
 
 
-_PY_JAZZY = {
+# The Python classes of those substitutions (launch.substitutions), by their frontend names.
+_PY_NEWER = {
     "launch.substitutions.EqualsSubstitution": "equals",
     "launch.substitutions.NotEqualsSubstitution": "not-equals",
     "launch.substitutions.IfElseSubstitution": "if",
     "launch.substitutions.AnySubstitution": "any",
     "launch.substitutions.AllSubstitution": "all",
     "launch.substitutions.FileContent": "file-content",
+    "launch.substitutions.LaunchLogDir": "launch_log_dir",
 }
-_PY_NAME = {v: k.rsplit(".", 1)[-1] for k, v in _PY_JAZZY.items()}
+_PY_NAME = {v: k.rsplit(".", 1)[-1] for k, v in _PY_NEWER.items()}
 
 
 def _subst_name(part: Any) -> str | None:
@@ -51,6 +53,8 @@ def _subst_name(part: Any) -> str | None:
         return part.op
     if isinstance(part, FileContent):
         return "file-content"
+    if isinstance(part, Unknown) and part.reason == LAUNCH_LOG_DIR_REASON:
+        return "launch_log_dir"
     return None
 
 
@@ -82,7 +86,7 @@ def substitution_not_in_distro(ctx: CheckContext) -> Iterator[Diagnostic]:
         found: list[tuple[str, Any]] = []
         if lf.format == "python":
             if lf.python is not None:
-                found = [(_PY_JAZZY[c.qualname], c.span) for c in lf.python.calls if c.qualname in _PY_JAZZY]
+                found = [(_PY_NEWER[c.qualname], c.span) for c in lf.python.calls if c.qualname in _PY_NEWER]
         else:
             _walk(lf.actions, found)
         for name, span in found:
@@ -96,14 +100,19 @@ def substitution_not_in_distro(ctx: CheckContext) -> Iterator[Diagnostic]:
                     "L114", span,
                     f"{cls} does not exist in launch on {ctx.distro} (added in {since}); "
                     "the import fails with ImportError",
-                    help="use PythonExpression([...]) / LaunchConfigurationEquals on humble, or "
-                         "target a newer distro with --distro",
+                    help=("on humble the directory is launch.logging.launch_config.log_dir, or "
+                          "target a newer distro with --distro" if name == "launch_log_dir" else
+                          "use PythonExpression([...]) / LaunchConfigurationEquals on humble, or "
+                          "target a newer distro with --distro"),
                     key=cls)
             else:
+                shown = f"$({name})" if name == "launch_log_dir" else f"$({name} ...)"
                 yield Diagnostic(
                     "L114", span,
-                    f'substitution "$({name} ...)" does not exist on {ctx.distro} (added in {since}); '
+                    f'substitution "{shown}" does not exist on {ctx.distro} (added in {since}); '
                     f"launch fails with \"Unknown substitution: {name}\"",
-                    help="use $(eval ...) on humble (e.g. $(eval \"'$(var mode)' == 'sim'\")), or "
-                         "target a newer distro with --distro",
+                    help=("use $(log_dir) on humble (the same directory), or target a newer distro "
+                          "with --distro" if name == "launch_log_dir" else
+                          "use $(eval ...) on humble (e.g. $(eval \"'$(var mode)' == 'sim'\")), or "
+                          "target a newer distro with --distro"),
                     key=name)

@@ -57,10 +57,13 @@ ROS1_SUBSTITUTIONS: dict[str, str] = {
     "optenv": "$(env NAME DEFAULT)", "arg": "$(var NAME)", "find": "$(find-pkg-share PKG)",
 }
 # Substitutions missing from humble's expose registry: name -> first distro that has them.
+# launch_log_dir came with iron (launch #652, ``LaunchLogDir``); humble has only ``log_dir``.
 DISTRO_ONLY_SUBSTITUTIONS: dict[str, str] = {
     "any": "jazzy", "all": "jazzy", "equals": "jazzy", "not-equals": "jazzy", "if": "jazzy",
-    "file-content": "jazzy",
+    "file-content": "jazzy", "launch_log_dir": "iron",
 }
+# What ``$(launch_log_dir)`` becomes (the directory is only known at run time).
+LAUNCH_LOG_DIR_REASON = "launch log directory ($(launch_log_dir))"
 
 _ESCAPE = re.compile(r"\\(.)")
 _IDENT = re.compile(r"[A-Za-z][A-Za-z0-9_-]*")
@@ -356,5 +359,5 @@ _BUILDERS: dict[str, Callable[[list[Value], Span], Subst]] = {
     "param": lambda a, s: ParamRef(a[0], s, _opt(a, 1)),
     "file-content": lambda a, s: FileContent(a[0], s),
     "log_dir": lambda a, s: Unknown("log directory ($(log_dir))", s),
-    "launch_log_dir": lambda a, s: Unknown("launch log directory ($(launch_log_dir))", s),
+    "launch_log_dir": lambda a, s: Unknown(LAUNCH_LOG_DIR_REASON, s),
 }

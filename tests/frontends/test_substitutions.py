@@ -190,6 +190,6 @@ def test_explicit_positions_are_used() -> None:
 
 def test_distro_table() -> None:
     assert set(DISTRO_ONLY_SUBSTITUTIONS) == {"any", "all", "equals", "not-equals", "if",
-                                              "file-content"}
+                                              "file-content", "launch_log_dir"}
     _, diags = parse("$(equals a b)")
     assert diags == []  # reported by a rule that knows the distro

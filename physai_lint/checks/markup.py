@@ -65,15 +65,32 @@ def _walk(obj: Any, out: list[tuple[str, Any]], depth: int = 0) -> None:
         for item in obj:
             _walk(item, out, depth + 1)
         return
-    if dataclasses.is_dataclass(obj):
+    names = _walked_fields(type(obj))
+    if names is not None:
         name = _subst_name(obj)
         span = getattr(obj, "span", None)
         if name is not None and span is not None:
             out.append((name, span))
-        for f in dataclasses.fields(obj):
-            if f.name in ("span", "name_span", "field_spans"):
-                continue
-            _walk(getattr(obj, f.name), out, depth + 1)
+        for field_name in names:
+            _walk(getattr(obj, field_name), out, depth + 1)
+
+
+_FIELDS: dict[type, tuple[str, ...] | None] = {}
+
+
+def _walked_fields(cls: type) -> tuple[str, ...] | None:
+    """The fields ``_walk`` descends into for a dataclass type (positions skipped); None for a
+    type that is not a dataclass. ``dataclasses.fields`` once per type, not once per object."""
+    try:
+        return _FIELDS[cls]
+    except KeyError:
+        pass
+    names = None
+    if dataclasses.is_dataclass(cls):
+        names = tuple(f.name for f in dataclasses.fields(cls)
+                      if f.name not in ("span", "name_span", "field_spans"))
+    _FIELDS[cls] = names
+    return names
 
 
 @rule("L114", "substitution-not-in-distro")

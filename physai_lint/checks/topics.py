@@ -7,7 +7,7 @@ from collections.abc import Iterator
 
 from physai_lint.checks._util import all_nodes
 from physai_lint.checks.base import CheckContext, rule
-from physai_lint.graph.system import SystemGraph, build_graph, remap_target, similar
+from physai_lint.graph.system import Endpoint, SystemGraph, build_graph, remap_target, similar
 from physai_lint.model.findings import Diagnostic, Related
 from physai_lint.resolve.model import NodeInstance
 
@@ -206,8 +206,12 @@ def _dangling(ctx: CheckContext, mine: str, other: str, code: str) -> Iterator[D
 def type_mismatch(ctx: CheckContext) -> Iterator[Diagnostic]:
     seen: set[object] = set()
     for g in graphs(ctx):
+        by_topic: dict[str, list[Endpoint]] = {}  # typed publishers and subscribers, in endpoint order
+        for e in g.endpoints:
+            if e.resolved and e.type and e.kind in ("publisher", "subscriber"):
+                by_topic.setdefault(e.resolved, []).append(e)
         for topic in g.topics():
-            eps = [e for e in g.endpoints if e.resolved == topic and e.type and e.kind in ("publisher", "subscriber")]
+            eps = by_topic.get(topic, [])
             types = sorted({e.type for e in eps if e.type})
             if len(types) < 2:
                 continue

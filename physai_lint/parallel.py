@@ -444,16 +444,20 @@ def _resolve_shared(entries: list[str], resolve: Any, store: Any, load: Any, pro
     import mmap
 
     n = len(entries)
+    fd = _scratch_file()
+    if fd is None:
+        return resolve_entries(entries, resolve, store, load, 1, progress)
     # The claims, in memory shared with the helper: [front, back, bytes the helper has written].
     # This process alone moves the front and the helper alone the back, each publishing its claim
     # before it works on it; at the meeting point both may take the same entry (harmless: this
     # process keeps its own result), never none.
-    shared = mmap.mmap(-1, 24)
+    try:
+        shared = mmap.mmap(-1, 24)
+    except OSError:
+        os.close(fd)
+        return resolve_entries(entries, resolve, store, load, 1, progress)
     _put(shared, 0, 0)
     _put(shared, 1, n)
-    fd = _scratch_file()
-    if fd is None:
-        return resolve_entries(entries, resolve, store, load, 1, progress)
     freeze = gc.get_freeze_count() == 0
     if freeze:
         gc.freeze()  # the helper's collector, if on, does not copy the inherited pages

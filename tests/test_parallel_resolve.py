@@ -146,3 +146,13 @@ def test_two_jobs_build_the_project_one_job_builds(tmp_path: Path, low_threshold
     assert set(shared.store.texts) == set(serial.store.texts)
     assert sorted(map(repr, shared.diagnostics)) == sorted(map(repr, serial.diagnostics))
     assert {d.span.file for d in serial.diagnostics if d.code == "X006"} == included
+
+
+@forks
+def test_without_a_scratch_file_everything_is_resolved_here(low_thresholds: None,
+                                                           monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(parallel, "_scratch_file", lambda: None)
+    store = _Store()
+    entries = [f"e{i}" for i in range(20)]
+    out = parallel.resolve_entries(entries, _toy(store), store, lambda p: None, 2)
+    assert out == [(e, os.getpid()) for e in entries]

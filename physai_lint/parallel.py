@@ -1,9 +1,14 @@
-"""``--jobs``: parse files in a process pool, run groups of rules in forked processes.
+"""``--jobs``: parse files in a process pool, share resolution with a forked helper, run groups
+of rules in forked processes.
 
 A pool costs a fork per worker and a pickle round trip per file, so small runs (the pre-commit
 case) stay in this process: below ``MIN_PARALLEL_FILES`` files to parse, or with one job, nothing
 is started. Output never depends on the number of jobs: ``map_jobs`` returns results in the
 order of its input, and the caller merges them in that order.
+
+Resolution (``resolve_entries``) takes entries from both ends of a list, this process from the
+front and a forked helper from the back; the helper's results come back pickled and are put in
+their places, so the list is the serial loop's.
 
 The rules (``run_rules``) run once the project is built: groups of them in forked children that
 inherit it copy-on-write and send back only their findings, from ``MIN_FORK_FILES`` parsed files

@@ -427,7 +427,7 @@ def _build_app() -> Any:
         statistics: bool = Opt(False, "--statistics", help="Print a count per rule instead of the findings."),
         baseline: Optional[str] = Opt(None, "--baseline", help="Hide the findings recorded in FILE.", metavar="FILE"),
         write_baseline: Optional[str] = Opt(None, "--write-baseline", help="Record the current findings in FILE and exit 0.", metavar="FILE"),
-        jobs: Optional[int] = Opt(None, "--jobs", "-j", metavar="N", help="Parallel workers for parsing (default: number of CPUs)."),
+        jobs: Optional[int] = Opt(None, "--jobs", "-j", metavar="N", help="Processes that parse, resolve and check in parallel (default: number of CPUs); the report is the same for any N."),
         no_cache: bool = Opt(False, "--no-cache", help="Do not read or write the parse cache (see PHYSAI_LINT_CACHE_DIR)."),
         no_respect_gitignore: bool = Opt(False, "--no-respect-gitignore", help="Also check files ignored by git."),
         strict: bool = Opt(False, "--strict", help="Report some statically unknown values as notes."),

@@ -5,7 +5,7 @@ from collections.abc import Iterator
 from typing import Any
 
 from physai_lint.checks.base import CheckContext, rule
-from physai_lint.model.fields import ATOMS, field_names
+from physai_lint.model.fields import ATOMS, POSITION_FIELDS, field_names
 from physai_lint.model.findings import Diagnostic
 from physai_lint.model.span import Span
 from physai_lint.model.values import Command, FindPackage, PathJoin, literal_of
@@ -102,14 +102,11 @@ def _collect_commands(obj: Any, out: list[Command], depth: int = 0) -> None:
         out.append(obj)
         return
     for name in field_names(type(obj)):
-        if name in _SPAN_FIELDS:
+        if name in POSITION_FIELDS:
             continue
         child = getattr(obj, name)
         if type(child) not in ATOMS:
             _collect_commands(child, out, depth + 1)
-
-
-_SPAN_FIELDS = frozenset({"span", "name_span", "field_spans"})
 
 
 def _known_share_path(ctx: CheckContext, join: PathJoin) -> tuple[str, str] | None:

@@ -1,13 +1,13 @@
 """XML/YAML markup and substitutions: L002 unknown-attribute, L114 substitution-not-in-distro."""
 from __future__ import annotations
 
-import dataclasses
 from collections.abc import Iterator
 from typing import Any
 
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.frontends.substitutions import DISTRO_ONLY_SUBSTITUTIONS, LAUNCH_LOG_DIR_REASON
 from physai_lint.frontends.tags import unknown_markup
+from physai_lint.model.fields import ATOMS, POSITION_FIELDS, field_names
 from physai_lint.model.findings import Diagnostic
 from physai_lint.model.values import BoolOp, Compare, FileContent, IfElse, Unknown
 
@@ -59,38 +59,19 @@ def _subst_name(part: Any) -> str | None:
 
 
 def _walk(obj: Any, out: list[tuple[str, Any]], depth: int = 0) -> None:
-    if depth > 60 or obj is None or isinstance(obj, (str, int, float, bool, bytes)):
+    if depth > 60 or type(obj) in ATOMS:
         return
     if isinstance(obj, (tuple, list)):
         for item in obj:
             _walk(item, out, depth + 1)
         return
-    names = _walked_fields(type(obj))
-    if names is not None:
-        name = _subst_name(obj)
-        span = getattr(obj, "span", None)
-        if name is not None and span is not None:
-            out.append((name, span))
-        for field_name in names:
+    name = _subst_name(obj)
+    span = getattr(obj, "span", None)
+    if name is not None and span is not None:
+        out.append((name, span))
+    for field_name in field_names(type(obj)):
+        if field_name not in POSITION_FIELDS:
             _walk(getattr(obj, field_name), out, depth + 1)
-
-
-_FIELDS: dict[type, tuple[str, ...] | None] = {}
-
-
-def _walked_fields(cls: type) -> tuple[str, ...] | None:
-    """The fields ``_walk`` descends into for a dataclass type (positions skipped); None for a
-    type that is not a dataclass. ``dataclasses.fields`` once per type, not once per object."""
-    try:
-        return _FIELDS[cls]
-    except KeyError:
-        pass
-    names = None
-    if dataclasses.is_dataclass(cls):
-        names = tuple(f.name for f in dataclasses.fields(cls)
-                      if f.name not in ("span", "name_span", "field_spans"))
-    _FIELDS[cls] = names
-    return names
 
 
 @rule("L114", "substitution-not-in-distro")

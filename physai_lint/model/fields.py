@@ -6,6 +6,8 @@ from __future__ import annotations
 import dataclasses
 
 ATOMS = frozenset({str, int, float, bool, bytes, type(None)})
+# Fields that hold source positions, never a model object a walk looks for.
+POSITION_FIELDS = frozenset({"span", "name_span", "field_spans"})
 _NAMES: dict[type, tuple[str, ...]] = {}
 
 

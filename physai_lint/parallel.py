@@ -17,6 +17,7 @@ on; the findings are put back in rule order, so the list is the one a loop over 
 from __future__ import annotations
 
 import os
+import struct
 import sys
 from collections.abc import Iterator, Sequence
 from typing import Any
@@ -457,7 +458,7 @@ def _resolve_shared(entries: list[str], resolve: Any, store: Any, load: Any, pro
     # before it works on it; at the meeting point both may take the same entry (harmless: this
     # process keeps its own result), never none.
     try:
-        shared = mmap.mmap(-1, 24)
+        shared = mmap.mmap(-1, 3 * _COUNTER.size)
     except OSError:
         os.close(fd)
         return resolve_entries(entries, resolve, store, load, 1, progress)
@@ -483,10 +484,10 @@ def _resolve_shared(entries: list[str], resolve: Any, store: Any, load: Any, pro
         import pickle
 
         end = _get(shared, 2)
-        while offset + 8 <= end:
-            i, size = _unpack_header(os.pread(fd, 8, offset))
-            data = os.pread(fd, size, offset + 8) if size else b""
-            offset += 8 + size
+        while offset + _FRAME.size <= end:
+            i, size = _FRAME.unpack(os.pread(fd, _FRAME.size, offset))
+            data = os.pread(fd, size, offset + _FRAME.size) if size else b""
+            offset += _FRAME.size + size
             if mine[i] or len(data) != size:
                 continue
             try:
@@ -560,7 +561,7 @@ def _resolve_helper(entries: list[str], resolve: Any, store: Any, shared: Any, f
                 data = pickle.dumps((result, loaded), protocol=pickle.HIGHEST_PROTOCOL)
             except Exception:  # noqa: BLE001, S112 - the parent resolves this one itself
                 continue
-            frame = _pack_header(i, len(data)) + data
+            frame = _FRAME.pack(i, len(data)) + data
             view = memoryview(frame)
             while view:
                 view = view[os.write(fd, view):]
@@ -589,25 +590,12 @@ def _scratch_file() -> int | None:
 
 
 def _put(shared: Any, slot: int, value: int) -> None:
-    import struct
-
-    struct.pack_into("<q", shared, slot * 8, value)
+    _COUNTER.pack_into(shared, slot * _COUNTER.size, value)
 
 
 def _get(shared: Any, slot: int) -> int:
-    import struct
-
-    return int(struct.unpack_from("<q", shared, slot * 8)[0])
+    return int(_COUNTER.unpack_from(shared, slot * _COUNTER.size)[0])
 
 
-def _pack_header(index: int, size: int) -> bytes:
-    import struct
-
-    return struct.pack("<II", index, size)
-
-
-def _unpack_header(data: bytes) -> tuple[int, int]:
-    import struct
-
-    i, size = struct.unpack("<II", data)
-    return int(i), int(size)
+_COUNTER = struct.Struct("<q")  # one slot of the shared page
+_FRAME = struct.Struct("<II")  # a helper result's header: entry index, pickle size

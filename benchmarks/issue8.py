@@ -96,8 +96,9 @@ def real_rows(root: Path, rows: set[str], runs: int) -> None:
             "the best any 2-job run can do here", "informative")
         # The same line for this workload (memory-bound, so a shared core hurts it more than the
         # loop above): two 1-job runs side by side, until both end, against twice one alone.
-        together = timed_pair([*base, "-j", "1", "--no-cache"], runs)
-        row("  this workload: two 1-job runs together / 2 x 1", together, 2 * statistics.median(one_again),
+        pair = statistics.median([together(lint_command() + [*base, "-j", "1", "--no-cache"])
+                                  for _ in range(runs)])
+        row("  this workload: two 1-job runs together / 2 x 1", pair, 2 * statistics.median(one_again),
             "a perfectly parallel 2-job run", "informative")
     if "memory" in rows:
         rss = peak_rss_mib(lint_command() + [*base, "-j", "1", "--no-cache"], REPO)
@@ -114,29 +115,23 @@ def parallel_capacity(runs: int) -> tuple[float, float]:
     of 0.5 against twice the single time; a virtual machine whose two CPUs share a core, or
     whose host is busy, gives more, and no 2-job run can beat it."""
     singles, pairs = [], []
+    burn = [sys.executable, "-c", _BURN]
     for _ in range(max(runs, 3)):
         start = time.perf_counter()
-        subprocess.run([sys.executable, "-c", _BURN], check=True, stdout=subprocess.DEVNULL)
+        subprocess.run(burn, check=True, stdout=subprocess.DEVNULL)
         singles.append(time.perf_counter() - start)
-        start = time.perf_counter()
-        procs = [subprocess.Popen([sys.executable, "-c", _BURN], stdout=subprocess.DEVNULL) for _ in range(2)]
-        for proc in procs:
-            proc.wait()
-        pairs.append(time.perf_counter() - start)
+        pairs.append(together(burn))
     return statistics.median(pairs), statistics.median(singles)
 
 
-def timed_pair(args: list[str], runs: int) -> float:
-    """Median seconds for two copies of ``physai-lint args`` started together, until both end."""
-    walls = []
-    for _ in range(runs):
-        start = time.perf_counter()
-        procs = [subprocess.Popen(lint_command() + args, cwd=REPO, stdout=subprocess.DEVNULL,
-                                  stderr=subprocess.DEVNULL) for _ in range(2)]
-        for proc in procs:
-            proc.wait()
-        walls.append(time.perf_counter() - start)
-    return statistics.median(walls)
+def together(cmd: list[str]) -> float:
+    """Seconds for two copies of ``cmd`` started together, until both end."""
+    start = time.perf_counter()
+    procs = [subprocess.Popen(cmd, cwd=REPO, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+             for _ in range(2)]
+    for proc in procs:
+        proc.wait()
+    return time.perf_counter() - start
 
 
 def autoware_row(root: Path, runs: int, python: str | None, runner: str | None) -> None:

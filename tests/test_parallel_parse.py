@@ -1,5 +1,6 @@
-"""``parallel.map_jobs``: this process parses from the back while the pool takes the front; the
-results are those of a serial loop, in input order."""
+"""``parallel.map_jobs``: this process parses from the front while a forked helper (or, where
+the platform cannot fork, a pool) takes the back; the results are those of a serial loop, in input
+order."""
 from __future__ import annotations
 
 import os
@@ -33,7 +34,7 @@ def _plain(results: list[tuple[object, bool, bytes | None]]) -> list[bytes]:
     return [pickle.dumps((value, ok)) for value, ok, _ in results]
 
 
-@pytest.mark.skipif(not hasattr(os, "fork"), reason="the pool forks")
+@pytest.mark.skipif(not hasattr(os, "fork"), reason="the helper is forked")
 def test_two_jobs_give_the_serial_results_in_order_and_the_parent_takes_a_share(
         tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     jobs = _jobs(tmp_path, 4 * parallel.MIN_PARALLEL_FILES)
@@ -51,11 +52,12 @@ def test_two_jobs_give_the_serial_results_in_order_and_the_parent_takes_a_share(
     shared = list(parallel.map_jobs(jobs, 2))
     assert _plain(shared) == _plain(serial)
     assert here, "the parent parsed nothing itself"
-    # it works from the back: what it parsed is a tail of the input
-    assert set(here) == {j.path for j in jobs[len(jobs) - len(here):]}
-    # what came from the pool comes with its pickle (for the cache); the parent's own, without
-    assert all(data is not None for _, _, data in shared[:len(jobs) - len(here)])
-    assert all(data is None for _, _, data in shared[len(jobs) - len(here):])
+    assert len(here) < len(jobs), "the helper parsed nothing"
+    # it works from the front: what it parsed is a head of the input
+    assert here == [j.path for j in jobs[:len(here)]]
+    # its own results come without a pickle; the helper's with theirs (for the cache)
+    assert all(data is None for _, _, data in shared[:len(here)])
+    assert all(data is not None for _, _, data in shared[len(here):])
 
 
 def test_few_jobs_stay_in_this_process(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
@@ -66,3 +68,55 @@ def test_few_jobs_stay_in_this_process(tmp_path: Path, monkeypatch: pytest.Monke
 
     monkeypatch.setattr(parallel, "_pool", no_pool)
     assert _plain(list(parallel.map_jobs(jobs, 4))) == _plain(list(parallel.map_jobs(jobs, 1)))
+
+
+@pytest.mark.skipif(not hasattr(os, "fork"), reason="the helper is forked")
+def test_a_helper_that_dies_loses_nothing(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    jobs = _jobs(tmp_path, 4 * parallel.MIN_PARALLEL_FILES)
+    serial = list(parallel.map_jobs(jobs, 1))
+    real = files.run_job
+    parent = os.getpid()
+
+    def dying(job: Job, reader: object) -> tuple[object, bool]:
+        if os.getpid() != parent:
+            os._exit(3)  # the helper dies on its first job
+        return real(job, reader)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(files, "run_job", dying)
+    assert _plain(list(parallel.map_jobs(jobs, 2))) == _plain(serial)
+
+
+@pytest.mark.skipif(not hasattr(os, "fork"), reason="the helpers are forked")
+def test_several_helpers_share_the_back_under_a_lock(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """With 4 jobs, three helpers claim from the back: every item is done, once, in order."""
+    done: list[int] = []
+    out: dict[int, int] = {}
+    n = 200
+
+    def local(i: int) -> None:
+        done.append(i)
+        out[i] = os.getpid()
+
+    def remote(i: int) -> bytes:
+        import time
+
+        time.sleep(0.001)
+        return str(os.getpid()).encode()
+
+    def accept(i: int, data: bytes) -> bool:
+        out[i] = int(data)
+        return True
+
+    parallel.share(n, local, remote, accept, 3)
+    assert sorted(out) == list(range(n))
+    assert done == list(range(len(done))), "this process works from the front"
+    assert len(set(out.values())) >= 2
+
+
+def test_without_fork_a_pool_shares_the_work(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Where forking is unsafe (macOS, a threaded process), a process pool takes the front."""
+    jobs = _jobs(tmp_path, 4 * parallel.MIN_PARALLEL_FILES)
+    serial = list(parallel.map_jobs(jobs, 1))
+    monkeypatch.setattr(parallel, "_can_fork", lambda *args: False)
+    shared = list(parallel.map_jobs(jobs, 2))
+    assert _plain(shared) == _plain(serial)

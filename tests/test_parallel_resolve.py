@@ -151,7 +151,7 @@ def test_two_jobs_build_the_project_one_job_builds(tmp_path: Path, low_threshold
 @forks
 def test_without_a_scratch_file_everything_is_resolved_here(low_thresholds: None,
                                                            monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.setattr(parallel, "_scratch_file", lambda: None)
+    monkeypatch.setattr(parallel, "_scratch_file", lambda name: None)
     store = _Store()
     entries = [f"e{i}" for i in range(20)]
     out = parallel.resolve_entries(entries, _toy(store), store, lambda p: None, 2)

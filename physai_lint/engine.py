@@ -117,7 +117,7 @@ def build_project(opts: CheckOptions, cwd: str | None = None, progress: Any = No
         return resolve_quiet(entry)
 
     def resolve_many(entries: list[str]) -> list[Any]:
-        # with --jobs, a forked helper takes a share (physai_lint/parallel.py)
+        # with --jobs, forked helpers take a share (physai_lint/parallel.py)
         return resolve_entries(entries, resolve_quiet, store, loader, jobs, progress,
                                files=len(store.launches) + len(store.params))
 

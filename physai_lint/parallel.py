@@ -565,7 +565,10 @@ def share(n: int, local: Any, remote: Any, accept: Any, helpers: int) -> None:
             fds.append(fd)
         if len(fds) > 1:
             lock = _scratch_file("physai-lint-claims")
-            if lock is None or not _lockable(lock):
+            if lock is None or not _lockable(lock):  # no lock between helpers: just one
+                if lock is not None:
+                    os.close(lock)
+                    lock = None
                 for fd in fds[1:]:
                     os.close(fd)
                 del fds[1:]

@@ -94,6 +94,9 @@ def test_several_helpers_share_the_back_under_a_lock(tmp_path: Path, monkeypatch
     n = 200
 
     def local(i: int) -> None:
+        import time
+
+        time.sleep(0.001)  # slow enough for the helpers to start before this process is done
         done.append(i)
         out[i] = os.getpid()
 
@@ -120,3 +123,30 @@ def test_without_fork_a_pool_shares_the_work(tmp_path: Path, monkeypatch: pytest
     monkeypatch.setattr(parallel, "_can_fork", lambda *args: False)
     shared = list(parallel.map_jobs(jobs, 2))
     assert _plain(shared) == _plain(serial)
+
+
+@pytest.mark.skipif(not hasattr(os, "fork"), reason="the helper is forked")
+def test_without_a_lock_one_helper_still_shares(monkeypatch: pytest.MonkeyPatch) -> None:
+    """No record lock on this platform: one helper (which needs none) instead of three."""
+    monkeypatch.setattr(parallel, "_lockable", lambda fd: False)
+    out: dict[int, int] = {}
+
+    def local(i: int) -> None:
+        import time
+
+        time.sleep(0.001)  # slow enough for the helper to start before this process is done
+        out[i] = os.getpid()
+
+    def remote(i: int) -> bytes:
+        import time
+
+        time.sleep(0.001)
+        return str(os.getpid()).encode()
+
+    def accept(i: int, data: bytes) -> bool:
+        out[i] = int(data)
+        return True
+
+    parallel.share(100, local, remote, accept, 3)
+    assert sorted(out) == list(range(100))
+    assert len(set(out.values())) == 2, "one helper and this process"

@@ -377,16 +377,11 @@ def _run_forked(rules: Sequence[tuple[str, Any]], run_one: Any, groups: list[lis
                 results: list[list[Any] | None], progress: Any) -> set[int]:
     """Groups 1.. in forked children, group 0 here; fills ``results`` with what came back whole
     (the caller runs the rest) and returns the rules already counted on the progress bar."""
-    import gc
     import selectors
 
-    # Objects frozen before the fork are never visited by the children's collector: their pages
-    # stay shared instead of being copied by a collection.
-    freeze = gc.get_freeze_count() == 0
-    if freeze:
-        gc.freeze()
     children: list[_Child] = []
     shown: set[int] = set()
+    thaw = _freeze_gc()
     try:
         for group in groups[1:]:
             child = _fork(rules, run_one, group)
@@ -418,9 +413,20 @@ def _run_forked(rules: Sequence[tuple[str, Any]], run_one: Any, groups: list[lis
     finally:
         for child in children:
             child.reap(kill=child.status is None and not child.eof)  # interrupted: stop them
-        if freeze:
-            gc.unfreeze()
+        thaw()
     return shown
+
+
+def _freeze_gc() -> Any:
+    """Freeze the objects alive now (unless the caller already has): a forked process's collector
+    never visits them, so their pages stay shared instead of being copied by a collection.
+    Returns the function that undoes it."""
+    import gc
+
+    if gc.get_freeze_count():
+        return lambda: None
+    gc.freeze()
+    return gc.unfreeze
 
 
 def _fork(rules: Sequence[tuple[str, Any]], run_one: Any, group: list[int]) -> _Child | None:
@@ -495,7 +501,7 @@ def resolve_entries(entries: Sequence[str], resolve: Any, store: Any, load: Any,
 
 
 def _resolve_shared(entries: list[str], resolve: Any, store: Any, load: Any, progress: Any,
-                    helpers: int = 1) -> list[Any]:
+                    helpers: int) -> list[Any]:
     n = len(entries)
     results: list[Any] = [None] * n
 
@@ -549,7 +555,6 @@ def share(n: int, local: Any, remote: Any, accept: Any, helpers: int) -> None:
     frame does not come back whole, or is not accepted, is done here: a helper that dies loses
     nothing. Without fork, a file or shared memory, everything is done here, in order.
     """
-    import gc
     import mmap
 
     helpers = max(0, min(helpers, n - 1))
@@ -584,9 +589,7 @@ def share(n: int, local: Any, remote: Any, accept: Any, helpers: int) -> None:
             return
         _put(shared, 0, 0)
         _put(shared, 1, n)
-        freeze = gc.get_freeze_count() == 0
-        if freeze:
-            gc.freeze()  # the helpers' collectors, if on, do not copy the inherited pages
+        thaw = _freeze_gc()
         try:
             for h, fd in enumerate(fds):
                 try:
@@ -596,11 +599,9 @@ def share(n: int, local: Any, remote: Any, accept: Any, helpers: int) -> None:
                 if pid == 0:  # a helper: never returns
                     _helper(h, remote, shared, fd, lock)
                 pids.append(pid)
-            _share_here(n, local, accept, shared, fds[:len(pids)], pids)
-            pids = []
+            _share_here(n, local, accept, shared, fds[:len(pids)], pids)  # waits for them all
         finally:
-            if freeze:
-                gc.unfreeze()
+            thaw()
     finally:
         for pid in pids:  # interrupted: stop the helpers
             import signal
@@ -619,7 +620,8 @@ def share(n: int, local: Any, remote: Any, accept: Any, helpers: int) -> None:
 
 
 def _share_here(n: int, local: Any, accept: Any, shared: Any, fds: list[int], pids: list[int]) -> None:
-    """This process's side of ``share``: claim from the front and take in the helpers' frames."""
+    """This process's side of ``share``: claim from the front and take in the helpers' frames;
+    ``pids`` is emptied once every helper has been waited for (``share`` kills those left)."""
     done = [False] * n
     mine = [False] * n
     offsets = [0] * len(fds)

@@ -86,23 +86,20 @@ def test_a_helper_that_dies_loses_nothing(tmp_path: Path, monkeypatch: pytest.Mo
     assert _plain(list(parallel.map_jobs(jobs, 2))) == _plain(serial)
 
 
-@pytest.mark.skipif(not hasattr(os, "fork"), reason="the helpers are forked")
-def test_several_helpers_share_the_back_under_a_lock(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    """With 4 jobs, three helpers claim from the back: every item is done, once, in order."""
+def _share_pids(n: int, helpers: int) -> tuple[list[int], dict[int, int]]:
+    """``parallel.share`` over ``n`` slow items: the items this process did, in its order, and
+    the pid that did each item."""
+    import time
+
     done: list[int] = []
     out: dict[int, int] = {}
-    n = 200
 
     def local(i: int) -> None:
-        import time
-
         time.sleep(0.001)  # slow enough for the helpers to start before this process is done
         done.append(i)
         out[i] = os.getpid()
 
     def remote(i: int) -> bytes:
-        import time
-
         time.sleep(0.001)
         return str(os.getpid()).encode()
 
@@ -110,7 +107,15 @@ def test_several_helpers_share_the_back_under_a_lock(tmp_path: Path, monkeypatch
         out[i] = int(data)
         return True
 
-    parallel.share(n, local, remote, accept, 3)
+    parallel.share(n, local, remote, accept, helpers)
+    return done, out
+
+
+@pytest.mark.skipif(not hasattr(os, "fork"), reason="the helpers are forked")
+def test_several_helpers_share_the_back_under_a_lock() -> None:
+    """With 4 jobs, three helpers claim from the back: every item is done, once, in order."""
+    n = 200
+    done, out = _share_pids(n, 3)
     assert sorted(out) == list(range(n))
     assert done == list(range(len(done))), "this process works from the front"
     assert len(set(out.values())) >= 2
@@ -129,24 +134,6 @@ def test_without_fork_a_pool_shares_the_work(tmp_path: Path, monkeypatch: pytest
 def test_without_a_lock_one_helper_still_shares(monkeypatch: pytest.MonkeyPatch) -> None:
     """No record lock on this platform: one helper (which needs none) instead of three."""
     monkeypatch.setattr(parallel, "_lockable", lambda fd: False)
-    out: dict[int, int] = {}
-
-    def local(i: int) -> None:
-        import time
-
-        time.sleep(0.001)  # slow enough for the helper to start before this process is done
-        out[i] = os.getpid()
-
-    def remote(i: int) -> bytes:
-        import time
-
-        time.sleep(0.001)
-        return str(os.getpid()).encode()
-
-    def accept(i: int, data: bytes) -> bool:
-        out[i] = int(data)
-        return True
-
-    parallel.share(100, local, remote, accept, 3)
+    _, out = _share_pids(100, 3)
     assert sorted(out) == list(range(100))
     assert len(set(out.values())) == 2, "one helper and this process"

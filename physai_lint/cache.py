@@ -7,7 +7,8 @@ a CMakeLists.txt's build data (``workspace/index.py``; with the digests of the s
 CMakeLists.txt files it read, checked on every hit). Nothing that depends on other files
 (resolution, includes, findings) or on directory listings is cached here.
 
-Layout: ``<dir>/<2 hex>/<62 hex>.pickle``, the name being the SHA-256 of (code fingerprint, kind,
+Layout: ``<dir>/v2-<16 hex>/<2 hex>/<62 hex>.pickle``: one folder per generation (the first 16
+hex digits of the code fingerprint), the name being the SHA-256 of (code fingerprint, kind,
 options, path, text). Writes go to a temporary file in the same directory and are published with
 ``os.replace``, so concurrent runs never see half a file; an entry that cannot be read or
 unpickled is a miss; a directory that cannot be created or written turns the cache off for the
@@ -19,18 +20,38 @@ The directory is ``$PHYSAI_LINT_CACHE_DIR``, else the platform cache directory
 (``$XDG_CACHE_HOME/physai-lint``, ``~/.cache/physai-lint``; ``~/Library/Caches`` on macOS,
 ``%LOCALAPPDATA%`` on Windows). Entries are pickles: the directory must be as private as the
 user's home (a shared, writable cache directory would let others plant objects).
+
+The cache keeps itself bounded (``ParseCache.prune``, at most once a day, on opening): entries of
+other generations (older or other installs of physai-lint, and the flat layout of format 1) go
+once they are a week old, and when everything together exceeds ``$PHYSAI_LINT_CACHE_MAX_MB``
+(default 512; the space the files take on disk) the least recently written entries go until it
+is under four fifths of that. Only
+files with the names this module writes are ever removed, so a cache directory pointed at the
+wrong folder loses nothing else.
 """
 from __future__ import annotations
 
 import hashlib
 import os
 import pickle
+import re
 import sys
 import tempfile
+import time
 from typing import Any
 
 ENV_DIR = "PHYSAI_LINT_CACHE_DIR"
-FORMAT = b"physai-lint parse cache 1"
+ENV_MAX_MB = "PHYSAI_LINT_CACHE_MAX_MB"
+FORMAT = b"physai-lint parse cache 2"
+GENERATION_PREFIX = "v2-"
+DEFAULT_MAX_MB = 512
+PRUNE_EVERY = 24 * 3600  # seconds between two prunes of one cache directory
+STALE_AFTER = 7 * 24 * 3600  # age at which another generation's entries go
+TMP_STALE = 3600  # age at which a temporary file is an interrupted write, not one in progress
+_STAMP = ".last-prune"  # its modification time: when the directory was last pruned
+_GENERATION = re.compile(r"v\d+-[0-9a-f]{16}")
+_SHARD = re.compile(r"[0-9a-f]{2}")
+_ENTRY = re.compile(r"[0-9a-f]{62}\.pickle")
 # Modules whose code decides what a cached value looks like (relative to the package).
 _PRODUCERS = ("files.py", "cache.py", "frontends", "params", "model", "interfaces", "workspace")
 # Third-party packages whose code does (found without importing them: a warm run never does).
@@ -100,8 +121,10 @@ class ParseCache:
     """get/put of pickled values by key; every failure is a miss, never an error."""
 
     def __init__(self, directory: str, fingerprint: bytes | None = None) -> None:
-        self.directory = directory
+        self.root = directory
         self.fingerprint = fingerprint if fingerprint is not None else code_fingerprint()
+        self.generation = GENERATION_PREFIX + self.fingerprint.hex()[:16]
+        self.directory = os.path.join(directory, self.generation)
         self.enabled = True
         self.hits = self.misses = self.writes = 0
 
@@ -110,7 +133,51 @@ class ParseCache:
         if not enabled:
             return None
         directory = default_dir()
-        return cls(directory) if directory else None
+        if not directory:
+            return None
+        cache = cls(directory)
+        cache.prune()
+        return cache
+
+    def prune(self, now: float | None = None, force: bool = False) -> int:
+        """Bound the cache directory (see the module docstring); returns the entries removed.
+
+        Does nothing when the directory was pruned less than ``PRUNE_EVERY`` ago (one ``stat`` per
+        run), unless ``force``. Never fails: what cannot be listed or removed stays."""
+        now = time.time() if now is None else now
+        stamp = os.path.join(self.root, _STAMP)
+        try:
+            if not force and now - os.stat(stamp).st_mtime < PRUNE_EVERY:
+                return 0
+        except OSError:
+            if not os.path.isdir(self.root):
+                return 0  # nothing written yet
+        try:  # claim this prune first: concurrent runs then mostly skip it
+            with open(stamp, "ab"):
+                pass
+            os.utime(stamp, (now, now))
+        except OSError:
+            return 0
+        entries = _entries(self.root)
+        removed = 0
+        kept: list[tuple[float, int, str]] = []
+        for mtime, size, path, generation, temporary in entries:
+            age = now - mtime
+            if (temporary and age > TMP_STALE) or (generation != self.generation and age > STALE_AFTER):
+                removed += _remove(path)
+            elif not temporary:
+                kept.append((mtime, size, path))
+        limit = _max_bytes()
+        total = sum(size for _, size, _ in kept)
+        if total > limit:
+            for _, size, path in sorted(kept):
+                if total <= limit * 4 // 5:
+                    break
+                if _remove(path):
+                    removed += 1
+                    total -= size
+        _remove_empty_dirs(self.root)
+        return removed
 
     def key(self, kind: str, path: str, text: str, options: str = "") -> str:
         h = hashlib.sha256(self.fingerprint)
@@ -168,6 +235,91 @@ class ParseCache:
                     os.unlink(tmp)
                 except OSError:
                     pass
+
+
+def _max_bytes() -> int:
+    try:
+        return max(0, int(os.environ.get(ENV_MAX_MB, DEFAULT_MAX_MB))) * 2**20
+    except ValueError:
+        return DEFAULT_MAX_MB * 2**20
+
+
+def _entries(root: str) -> list[tuple[float, int, str, str | None, bool]]:
+    """(mtime, size, path, generation or None for the flat format-1 layout, temporary) of every
+    file this module may have written below ``root``; symbolic links are never followed."""
+    out: list[tuple[float, int, str, str | None, bool]] = []
+
+    def shard(path: str, generation: str | None) -> None:
+        try:
+            with os.scandir(path) as it:
+                for e in it:
+                    temporary = e.name.startswith(".tmp-")
+                    if not (temporary or _ENTRY.fullmatch(e.name)) or not e.is_file(follow_symlinks=False):
+                        continue
+                    try:
+                        st = e.stat(follow_symlinks=False)
+                    except OSError:
+                        continue
+                    # the space it takes on disk where the platform says (small files fill a block)
+                    size = getattr(st, "st_blocks", 0) * 512 or st.st_size
+                    out.append((st.st_mtime, size, e.path, generation, temporary))
+        except OSError:
+            pass
+
+    def shards(path: str, generation: str | None) -> None:
+        try:
+            with os.scandir(path) as it:
+                dirs = [e.path for e in it if _SHARD.fullmatch(e.name) and e.is_dir(follow_symlinks=False)]
+        except OSError:
+            return
+        for d in sorted(dirs):
+            shard(d, generation)
+
+    shards(root, None)
+    try:
+        with os.scandir(root) as it:
+            gens = [(e.name, e.path) for e in it if _GENERATION.fullmatch(e.name) and e.is_dir(follow_symlinks=False)]
+    except OSError:
+        gens = []
+    for name, path in sorted(gens):
+        shards(path, name)
+    return out
+
+
+def _remove(path: str) -> int:
+    try:
+        os.unlink(path)
+        return 1
+    except OSError:
+        return 0
+
+
+def _remove_empty_dirs(root: str) -> None:
+    """Remove the shard and generation folders left empty (``rmdir``: a non-empty one stays)."""
+    try:
+        with os.scandir(root) as it:
+            top = [e for e in it if e.is_dir(follow_symlinks=False)]
+    except OSError:
+        return
+    for e in top:
+        if _GENERATION.fullmatch(e.name):
+            try:
+                with os.scandir(e.path) as it:
+                    inner = [x.path for x in it if _SHARD.fullmatch(x.name) and x.is_dir(follow_symlinks=False)]
+            except OSError:
+                continue
+            for d in inner:
+                _rmdir(d)
+            _rmdir(e.path)
+        elif _SHARD.fullmatch(e.name):
+            _rmdir(e.path)
+
+
+def _rmdir(path: str) -> None:
+    try:
+        os.rmdir(path)
+    except OSError:
+        pass
 
 
 def dumps(value: Any) -> bytes | None:

@@ -3,6 +3,7 @@ beyond the size limit goes oldest first, and nothing it did not write is ever to
 from __future__ import annotations
 
 import os
+import tempfile
 import time
 from pathlib import Path
 
@@ -144,3 +145,21 @@ def test_opening_the_cache_prunes_it(tmp_path: Path, monkeypatch: pytest.MonkeyP
     assert opened is not None and opened.root == str(root)
     assert not old.exists()
     assert ParseCache.open(enabled=False) is None
+
+
+def test_a_write_survives_its_folder_being_pruned_meanwhile(cache: ParseCache,
+                                                             monkeypatch: pytest.MonkeyPatch) -> None:
+    real_mkstemp = tempfile.mkstemp
+    calls = []
+
+    def racing_mkstemp(*args: object, **kwargs: object) -> tuple[int, str]:
+        calls.append(kwargs.get("dir"))
+        if len(calls) == 1:  # another run's prune removes the empty folder just now
+            os.rmdir(str(kwargs["dir"]))
+        return real_mkstemp(*args, **kwargs)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(tempfile, "mkstemp", racing_mkstemp)
+    key = cache.key("launch", "/a.launch.py", "text")
+    cache.put(key, [1, 2])
+    assert len(calls) == 2 and cache.enabled
+    assert cache.get(key) == [1, 2]

@@ -25,9 +25,8 @@ The cache keeps itself bounded (``ParseCache.prune``, at most once a day, on ope
 other generations (older or other installs of physai-lint, and the flat layout of format 1) go
 once they are a week old, and when everything together exceeds ``$PHYSAI_LINT_CACHE_MAX_MB``
 (default 512; the space the files take on disk) the least recently written entries go until it
-is under four fifths of that. Only
-files with the names this module writes are ever removed, so a cache directory pointed at the
-wrong folder loses nothing else.
+is under four fifths of that. Only files with the names this module writes are ever removed, so
+a cache directory pointed at the wrong folder loses nothing else.
 """
 from __future__ import annotations
 

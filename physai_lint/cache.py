@@ -157,7 +157,7 @@ class ParseCache:
             os.utime(stamp, (now, now))
         except OSError:
             return 0
-        entries = _entries(self.root)
+        entries, folders = _entries(self.root)
         removed = 0
         kept: list[tuple[float, int, str]] = []
         for mtime, size, path, generation, temporary in entries:
@@ -175,7 +175,11 @@ class ParseCache:
                 if _remove(path):
                     removed += 1
                     total -= size
-        _remove_empty_dirs(self.root)
+        for folder in folders:  # those left empty (a folder with anything in it stays)
+            try:
+                os.rmdir(folder)
+            except OSError:
+                pass
         return removed
 
     def key(self, kind: str, path: str, text: str, options: str = "") -> str:
@@ -248,46 +252,49 @@ def _max_bytes() -> int:
         return DEFAULT_MAX_MB * 2**20
 
 
-def _entries(root: str) -> list[tuple[float, int, str, str | None, bool]]:
-    """(mtime, size, path, generation or None for the flat format-1 layout, temporary) of every
-    file this module may have written below ``root``; symbolic links are never followed."""
-    out: list[tuple[float, int, str, str | None, bool]] = []
+def _subdirs(path: str) -> list[tuple[str, str]]:
+    """(name, path) of the folders in ``path``, sorted; links to folders are not folders here."""
+    try:
+        with os.scandir(path) as it:
+            return sorted((e.name, e.path) for e in it if e.is_dir(follow_symlinks=False))
+    except OSError:
+        return []
 
-    def shard(path: str, generation: str | None) -> None:
-        try:
-            with os.scandir(path) as it:
-                for e in it:
-                    temporary = e.name.startswith(".tmp-")
-                    if not (temporary or _ENTRY.fullmatch(e.name)) or not e.is_file(follow_symlinks=False):
-                        continue
-                    try:
-                        st = e.stat(follow_symlinks=False)
-                    except OSError:
-                        continue
-                    # the space it takes on disk where the platform says (small files fill a block)
-                    size = getattr(st, "st_blocks", 0) * 512 or st.st_size
-                    out.append((st.st_mtime, size, e.path, generation, temporary))
-        except OSError:
-            pass
+
+def _entries(root: str) -> tuple[list[tuple[float, int, str, str | None, bool]], list[str]]:
+    """(mtime, size, path, generation or None for the flat format-1 layout, temporary) of every
+    file this module may have written below ``root``, and the shard and generation folders that
+    hold them (each shard before its generation: the order to remove them in once empty)."""
+    files: list[tuple[float, int, str, str | None, bool]] = []
+    folders: list[str] = []
 
     def shards(path: str, generation: str | None) -> None:
-        try:
-            with os.scandir(path) as it:
-                dirs = [e.path for e in it if _SHARD.fullmatch(e.name) and e.is_dir(follow_symlinks=False)]
-        except OSError:
-            return
-        for d in sorted(dirs):
-            shard(d, generation)
+        for name, shard in _subdirs(path):
+            if not _SHARD.fullmatch(name):
+                continue
+            folders.append(shard)
+            try:
+                with os.scandir(shard) as it:
+                    for e in it:
+                        temporary = e.name.startswith(".tmp-")
+                        if not (temporary or _ENTRY.fullmatch(e.name)) or not e.is_file(follow_symlinks=False):
+                            continue
+                        try:
+                            st = e.stat(follow_symlinks=False)
+                        except OSError:  # removed meanwhile
+                            continue
+                        # the space it takes on disk where the platform says (small files fill a block)
+                        size = getattr(st, "st_blocks", 0) * 512 or st.st_size
+                        files.append((st.st_mtime, size, e.path, generation, temporary))
+            except OSError:
+                continue
 
     shards(root, None)
-    try:
-        with os.scandir(root) as it:
-            gens = [(e.name, e.path) for e in it if _GENERATION.fullmatch(e.name) and e.is_dir(follow_symlinks=False)]
-    except OSError:
-        gens = []
-    for name, path in sorted(gens):
-        shards(path, name)
-    return out
+    for name, path in _subdirs(root):
+        if _GENERATION.fullmatch(name):
+            shards(path, name)
+            folders.append(path)
+    return files, folders
 
 
 def _remove(path: str) -> int:
@@ -296,34 +303,6 @@ def _remove(path: str) -> int:
         return 1
     except OSError:
         return 0
-
-
-def _remove_empty_dirs(root: str) -> None:
-    """Remove the shard and generation folders left empty (``rmdir``: a non-empty one stays)."""
-    try:
-        with os.scandir(root) as it:
-            top = [e for e in it if e.is_dir(follow_symlinks=False)]
-    except OSError:
-        return
-    for e in top:
-        if _GENERATION.fullmatch(e.name):
-            try:
-                with os.scandir(e.path) as it:
-                    inner = [x.path for x in it if _SHARD.fullmatch(x.name) and x.is_dir(follow_symlinks=False)]
-            except OSError:
-                continue
-            for d in inner:
-                _rmdir(d)
-            _rmdir(e.path)
-        elif _SHARD.fullmatch(e.name):
-            _rmdir(e.path)
-
-
-def _rmdir(path: str) -> None:
-    try:
-        os.rmdir(path)
-    except OSError:
-        pass
 
 
 def dumps(value: Any) -> bytes | None:

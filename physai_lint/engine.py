@@ -91,7 +91,7 @@ def build_project(opts: CheckOptions, cwd: str | None = None, progress: Any = No
     cache = ParseCache.open(opts.cache)  # parse results, package reading, C++ extraction
     packages = ws.build_package_index(root, opts.distro, os.environ.get("AMENT_PREFIX_PATH"), scope,
                                       cache=cache)
-    from physai_lint.parallel import default_jobs, resolve_entries
+    from physai_lint.parallel import default_jobs, read_packages, resolve_entries
     from physai_lint.progress import Progress
 
     progress = progress or Progress(False)
@@ -99,6 +99,9 @@ def build_project(opts: CheckOptions, cwd: str | None = None, progress: Any = No
     jobs = opts.jobs or default_jobs()
     # Parse every discovered file once, up front: from the disk cache, else in --jobs workers.
     store.preload(found.launch_files, found.param_files, opts.distro, jobs, progress)
+    if hasattr(packages, "names_holding"):  # read at the end anyway; with --jobs, on every CPU now
+        read_packages(packages, packages.names_holding([*paths, *found.launch_files, *found.param_files]),
+                      jobs, files=len(store.launches) + len(store.params))
     gcpolicy.parsing_done()
     diagnostics: list[Diagnostic] = []
 
@@ -187,7 +190,7 @@ def _interfaces(opts: CheckOptions, cwd: str, packages: Any, sink: list[Diagnost
 
 def run_checks(project: Project, opts: CheckOptions, progress: Any = None) -> list[Diagnostic]:
     from physai_lint.checks.base import CheckContext, load_all
-    from physai_lint.parallel import default_jobs, run_rules
+    from physai_lint.parallel import default_jobs, prefetch_interfaces, run_rules
 
     ctx = CheckContext(
         launch_files={p: lf for p, lf in project.store.launches.items() if lf is not None},
@@ -208,12 +211,23 @@ def run_checks(project: Project, opts: CheckOptions, progress: Any = None) -> li
             found.append(internal_error(where, f"rule {code} ({impl.name})", exc))
         return found
 
+    jobs = opts.jobs or default_jobs()
+    files = len(ctx.launch_files) + len(ctx.param_files)
     if progress is not None:
         progress.stage("checking", len(rules))
-    # With --jobs > 1 on a large project, groups of rules run in forked processes: same findings,
-    # same order (physai_lint/parallel.py).
-    return run_rules(rules, run_one, opts.jobs or default_jobs(), progress,
-                     files=len(ctx.launch_files) + len(ctx.param_files))
+    # With --jobs > 1 on a large project, the interfaces of the nodes' executables are extracted
+    # first on every CPU, then groups of rules run in forked processes: same findings, same order
+    # (physai_lint/parallel.py).
+    if project.interfaces is not None:
+        prefetch_interfaces(project.interfaces, _interface_keys(project.launches), jobs, files)
+    return run_rules(rules, run_one, jobs, progress, files=files)
+
+
+def _interface_keys(launches: list[Any]) -> list[tuple[str, str]]:
+    """(package, executable) of the nodes whose interfaces the rules ask for: every active node
+    that is not a plain process (``graph.system.build_graph``)."""
+    return [(n.package, n.executable) for r in launches for n in r.nodes
+            if n.kind != "process" and n.active is not False and n.package and n.executable]
 
 
 def to_findings(diags: list[Diagnostic], catalog: dict[str, Any], severity: dict[str, str]) -> list[Finding]:

@@ -208,29 +208,29 @@ FORK_MIN_ENV = "PHYSAI_LINT_FORK_MIN_FILES"
 
 # Rules that fill or read the same memo run in the same process (else each process builds it):
 # - checks/topics.graphs: the topic graphs of every launch (ctx.options["_graphs"]);
-# - the node interfaces (ctx.interfaces, an InterfaceStore: the C++ and Python sources of an
-#   executable are extracted the first time a node of it is asked about; the costliest memo),
-#   asked by the graphs and by the parameter rules that compare values with declarations;
 # - checks/_params.effective: the effective parameters of each node (ctx.options["_effective"]).
+# The node interfaces (ctx.interfaces: the C++ and Python sources of an executable, extracted the
+# first time a node of it is asked about), which both families ask for, are extracted before the
+# groups fork (``prefetch_interfaces``), so the two families can run in different processes.
 # Cheap memos are built again in each process instead: package manifests read on first use
 # (ctx.packages), close-match suggestions and parameter typing (module lru_caches).
 # A rule missing from here is still right, only slower: it builds what it needs itself.
 SHARED_MEMOS: tuple[tuple[int, tuple[str, ...]], ...] = (
     # (cost of the rules together, memos included, in the units of RULE_COST; the rules)
-    (1300, ("N104", "T102", "T104", "T201", "T202", "T203", "T204",  # graphs, interfaces
-           "P105", "P107", "P108", "P109", "P112",  # effective parameters, interfaces
-           "P111")),  # effective parameters
+    (165, ("N104", "T102", "T104", "T201", "T202", "T203", "T204")),  # graphs
+    (205, ("P105", "P107", "P108", "P109", "P111", "P112")),  # effective parameters
 )
 # Rules that ask those memos about a few nodes only (lifecycle managers, the target of a
 # "ros2 param" command): they compute these few wherever they run.
 LIGHT_MEMO_USERS = frozenset({"P110", "S101", "S201", "S202"})
 
-# A static cost per rule: about its milliseconds on the real-workspace benchmark (1,180 files;
-# S101 imports networkx only for a launch whose startup edges close a cycle); a rule not listed
-# costs DEFAULT_COST. Only the balance of the groups depends on these numbers, never the findings.
+# A static cost per rule: about its milliseconds on the real-workspace benchmark (1,180 files,
+# interfaces prefetched; S101 imports networkx only for a launch whose startup edges close a
+# cycle); a rule not listed costs DEFAULT_COST. Only the balance of the groups depends on these
+# numbers, never the findings.
 RULE_COST: dict[str, int] = {
-    "U101": 250, "L114": 110, "L101": 100, "L106": 80, "U104": 60, "L102": 30, "S101": 20,
-    "U103": 17, "N105": 13, "L108": 10, "U102": 10,
+    "U101": 240, "L101": 65, "L106": 50, "U104": 40, "L114": 40, "U102": 35, "L102": 20,
+    "U103": 18, "N105": 17, "S101": 13, "L002": 12, "T101": 9, "P106": 8,
 }
 DEFAULT_COST = 3
 
@@ -537,6 +537,107 @@ def _resolve_shared(entries: list[str], resolve: Any, store: Any, load: Any, pro
 
     share(n, local, remote, accept, helpers)
     return results
+
+
+# ---- workspace packages: read before resolution, shared with forked helpers ------------------
+
+def read_packages(index: Any, names: Sequence[str], jobs: int, files: int = 0) -> None:
+    """Read the workspace packages ``names`` (``index.packages[name]``: the manifest, the
+    CMakeLists.txt or setup.py, a listing of the files) before resolution asks for them, shared
+    with forked helpers (``share``) under the conditions of ``run_rules``'s fork; otherwise nothing
+    (they are read when first asked for, as before).
+
+    The engine reads every package that holds a checked file anyway (their manifests' problems are
+    reported), but lazily: a package a resolution helper read was read there only, and this process
+    read it again at the end, alone (~0.2 s of 281 packages on the 1,180-file workspace). Read
+    here, resolution and the rules of every process find them read. A helper sends back each
+    package pickled with the problems and notes its reading added (``index.adopt_package``)."""
+    if not _can_fork(jobs, files) or len(names) < MIN_FORK_PACKAGES:
+        return
+    names = list(names)
+
+    def local(i: int) -> None:
+        index.packages.get(names[i])
+
+    def remote(i: int) -> bytes | None:
+        import pickle
+
+        try:
+            return pickle.dumps(index.read_package_elsewhere(names[i]), protocol=pickle.HIGHEST_PROTOCOL)
+        except Exception:  # noqa: BLE001 - the parent reads this package itself
+            return None
+
+    def accept(i: int, data: bytes) -> bool:
+        import pickle
+
+        try:
+            read = pickle.loads(data)
+        except Exception:  # noqa: BLE001 - read here instead
+            return False
+        if not isinstance(read, tuple) or len(read) != 3:
+            return False
+        index.adopt_package(names[i], read)
+        return True
+
+    share(len(names), local, remote, accept, jobs - 1)
+
+
+# ---- node interfaces: extracted before the rules, shared with forked helpers -----------------
+
+# Below this many packages to extract from, the rules extract them as they ask (a package's C++
+# sources take 1-30 ms to extract; nav2's controller and planner servers ~0.1 s).
+MIN_FORK_PACKAGES = 8
+
+
+def prefetch_interfaces(interfaces: Any, keys: Sequence[tuple[str, str]], jobs: int,
+                        files: int = 0) -> None:
+    """``interfaces.get(package, executable)`` for ``keys`` before the rules ask, shared with
+    forked helpers (``share``) under the conditions of ``run_rules``'s fork; otherwise nothing
+    (the rules ask the store lazily, as before).
+
+    Extracting the interfaces of the executables that nodes run (their C++ and Python sources) is
+    about half of the rules' time on a large workspace, and every rule that compares topics or
+    parameters with declarations asks for them: done here on every CPU, the forked rule groups
+    inherit the filled store, so those rules no longer need to run in one process. Items are whole
+    packages (executables of a package share sources and their tokens); a helper sends back each
+    package's interfaces pickled, which ``interfaces.prime`` takes as if asked here. An interface is
+    a pure function of the package index and the sources, so the rules see the same values."""
+    if not _can_fork(jobs, files):
+        return
+    by_package: dict[str, list[tuple[str, str]]] = {}
+    for key in sorted(set(keys)):
+        by_package.setdefault(key[0], []).append(key)
+    items = list(by_package.values())
+    if len(items) < MIN_FORK_PACKAGES:
+        return
+
+    def local(i: int) -> None:
+        for package, executable in items[i]:
+            interfaces.get(package, executable)
+
+    def remote(i: int) -> bytes | None:
+        import pickle
+
+        try:
+            return pickle.dumps([interfaces.get(p, e) for p, e in items[i]],
+                                protocol=pickle.HIGHEST_PROTOCOL)
+        except Exception:  # noqa: BLE001 - the parent extracts this package itself
+            return None
+
+    def accept(i: int, data: bytes) -> bool:
+        import pickle
+
+        try:
+            values = pickle.loads(data)
+        except Exception:  # noqa: BLE001 - extracted here instead
+            return False
+        if not isinstance(values, list) or len(values) != len(items[i]):
+            return False
+        for key, value in zip(items[i], values):
+            interfaces.prime(key, value)
+        return True
+
+    share(len(items), local, remote, accept, jobs - 1)
 
 
 # ---- sharing a list of items with forked helpers --------------------------------------------------

@@ -318,6 +318,10 @@ class InterfaceStore:
         self._cache[key] = result
         return result
 
+    def prime(self, key: Key, value: NodeInterface | None) -> None:
+        """Take ``get(*key)`` as computed elsewhere (a forked helper: ``parallel.prefetch_interfaces``)."""
+        self._cache.setdefault(key, value)
+
     def known(self) -> list[Key]:
         return sorted(set(self.declared) | set(self.bundled) | set(self._extracted))
 

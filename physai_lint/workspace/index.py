@@ -261,9 +261,29 @@ class PackageIndex:
     def read_packages_holding(self, paths: Iterable[str]) -> None:
         """Read every package whose directory holds one of ``paths`` (their manifests' problems
         are reported only then: the engine asks for those of the checked packages)."""
-        names = {name for path in paths for name in self._names_holding(posixpath.dirname(_norm(path)))}
-        for name in sorted(names):
+        for name in self.names_holding(paths):
             self.packages.get(name)
+
+    def names_holding(self, paths: Iterable[str]) -> list[str]:
+        """The names of the packages whose directories hold one of ``paths``, sorted."""
+        return sorted({name for path in paths for name in self._names_holding(posixpath.dirname(_norm(path)))})
+
+    def read_package_elsewhere(self, name: str) -> tuple[Any, list[Any], list[Any]]:
+        """Read package ``name`` in a forked helper (``parallel.read_packages``): the package (None
+        when unreadable) and the problems and notes its reading added, for ``adopt_package``."""
+        problems, notes = len(self.problems), len(self.notes)
+        pkg = self.packages.get(name)
+        return pkg, self.problems[problems:], self.notes[notes:]
+
+    def adopt_package(self, name: str, read: tuple[Any, list[Any], list[Any]]) -> None:
+        """Take what ``read_package_elsewhere`` returned as if the package had been read here."""
+        pkg, problems, notes = read
+        if name in self.packages._read:
+            return
+        self.problems.extend(problems)
+        self.notes.extend(notes)
+        if pkg is not None:  # unreadable: read (and reported) again when asked, as here
+            self.packages._read[name] = pkg
 
     def locate(self, path: str) -> Located:
         """Where a path launch would open comes from (see module docstring). Memoised: every node

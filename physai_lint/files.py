@@ -196,13 +196,13 @@ def import_parsers(jobs: Iterable[Job]) -> None:
     frontends and the parameter loader: ~0.1 s of CPU per helper)."""
     kinds = {"params" if job.kind == "params" else launch_format(job.path) for job in jobs}
     if "params" in kinds:
-        import physai_lint.params.loader  # noqa: F401
+        import physai_lint.params.loader
     if "python" in kinds:
-        import physai_lint.frontends.python  # noqa: F401
+        import physai_lint.frontends.python
     if "xml" in kinds:
-        import physai_lint.frontends.xml_launch  # noqa: F401
+        import physai_lint.frontends.xml_launch
     if "yaml" in kinds:
-        import physai_lint.frontends.yaml_launch  # noqa: F401
+        import physai_lint.frontends.yaml_launch
 
 
 def run_job(job: Job, reader: Callable[[str], str | None] | None) -> tuple[Any, bool]:

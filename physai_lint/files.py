@@ -194,15 +194,13 @@ def import_parsers(jobs: Iterable[Job]) -> None:
     Imported before parsing starts, they are shared with the helpers ``parallel.map_jobs`` forks;
     imported by the first job, each process imported them again (the Python frontend, the markup
     frontends and the parameter loader: ~0.1 s of CPU per helper)."""
+    from importlib import import_module
+
     kinds = {"params" if job.kind == "params" else launch_format(job.path) for job in jobs}
-    if "params" in kinds:
-        import physai_lint.params.loader
-    if "python" in kinds:
-        import physai_lint.frontends.python
-    if "xml" in kinds:
-        import physai_lint.frontends.xml_launch
-    if "yaml" in kinds:
-        import physai_lint.frontends.yaml_launch
+    for kind, module in (("params", "physai_lint.params.loader"), ("python", "physai_lint.frontends.python"),
+                         ("xml", "physai_lint.frontends.xml_launch"), ("yaml", "physai_lint.frontends.yaml_launch")):
+        if kind in kinds:
+            import_module(module)
 
 
 def run_job(job: Job, reader: Callable[[str], str | None] | None) -> tuple[Any, bool]:

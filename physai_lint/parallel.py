@@ -503,9 +503,10 @@ def resolve_entries(entries: Sequence[str], resolve: Any, store: Any, load: Any,
 def _resolve_shared(entries: list[str], resolve: Any, store: Any, load: Any, progress: Any,
                     helpers: int) -> list[Any]:
     # What resolution imports on first use, imported once here for the helpers to inherit.
-    import physai_lint.resolve.includes
-    import physai_lint.resolve.nav2_common  # noqa: F401
-    import physai_lint.resolve.safe_eval
+    from importlib import import_module
+
+    for module in ("includes", "nav2_common", "safe_eval"):
+        import_module(f"physai_lint.resolve.{module}")
 
     n = len(entries)
     results: list[Any] = [None] * n

@@ -547,6 +547,12 @@ def _resolve_shared(entries: list[str], resolve: Any, store: Any, load: Any, pro
 
 # ---- workspace packages: read before resolution, shared with forked helpers ------------------
 
+# Below this many packages, they are read (and their interfaces extracted) in this process, when
+# first asked for: a package reads in 1-3 ms, and its C++ sources extract in 1-30 ms (nav2's
+# controller and planner servers ~0.1 s); a helper costs a fork and its copy-on-write faults.
+MIN_FORK_PACKAGES = 8
+
+
 def read_packages(index: Any, names: Sequence[str], jobs: int, files: int = 0) -> None:
     """Read the workspace packages ``names`` (``index.packages[name]``: the manifest, the
     CMakeLists.txt or setup.py, a listing of the files) before resolution asks for them, shared
@@ -589,11 +595,6 @@ def read_packages(index: Any, names: Sequence[str], jobs: int, files: int = 0) -
 
 
 # ---- node interfaces: extracted before the rules, shared with forked helpers -----------------
-
-# Below this many packages to extract from, the rules extract them as they ask (a package's C++
-# sources take 1-30 ms to extract; nav2's controller and planner servers ~0.1 s).
-MIN_FORK_PACKAGES = 8
-
 
 def prefetch_interfaces(interfaces: Any, keys: Sequence[tuple[str, str]], jobs: int,
                         files: int = 0) -> None:

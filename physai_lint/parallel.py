@@ -516,24 +516,13 @@ def _resolve_shared(entries: list[str], resolve: Any, store: Any, load: Any, pro
             progress.advance()
         results[i] = resolve(entries[i])
 
-    def remote(i: int) -> bytes | None:
-        import pickle
-
+    def compute(i: int) -> Any:
         known = len(store.launches)
         result = resolve(entries[i])
-        loaded = list(store.launches)[known:]
-        try:
-            return pickle.dumps((result, loaded), protocol=pickle.HIGHEST_PROTOCOL)
-        except Exception:  # noqa: BLE001 - the parent resolves this one itself
-            return None
+        return result, list(store.launches)[known:]
 
-    def accept(i: int, data: bytes) -> bool:
-        import pickle
-
-        try:
-            result, loaded = pickle.loads(data)
-        except Exception:  # noqa: BLE001 - resolved here instead
-            return False
+    def take(i: int, value: Any) -> bool:
+        result, loaded = value
         for path in loaded:  # what the helper parsed on the way: parsed here too
             load(path)
         results[i] = result
@@ -541,7 +530,7 @@ def _resolve_shared(entries: list[str], resolve: Any, store: Any, load: Any, pro
             progress.advance()
         return True
 
-    share(n, local, remote, accept, helpers)
+    share_values(n, local, compute, take, helpers)
     return results
 
 
@@ -571,27 +560,13 @@ def read_packages(index: Any, names: Sequence[str], jobs: int, files: int = 0) -
     def local(i: int) -> None:
         index.packages.get(names[i])
 
-    def remote(i: int) -> bytes | None:
-        import pickle
-
-        try:
-            return pickle.dumps(index.read_package_elsewhere(names[i]), protocol=pickle.HIGHEST_PROTOCOL)
-        except Exception:  # noqa: BLE001 - the parent reads this package itself
-            return None
-
-    def accept(i: int, data: bytes) -> bool:
-        import pickle
-
-        try:
-            read = pickle.loads(data)
-        except Exception:  # noqa: BLE001 - read here instead
-            return False
+    def take(i: int, read: Any) -> bool:
         if not isinstance(read, tuple) or len(read) != 3:
             return False
         index.adopt_package(names[i], read)
         return True
 
-    share(len(names), local, remote, accept, jobs - 1)
+    share_values(len(names), local, lambda i: index.read_package_elsewhere(names[i]), take, jobs - 1)
 
 
 # ---- node interfaces: extracted before the rules, shared with forked helpers -----------------
@@ -622,32 +597,39 @@ def prefetch_interfaces(interfaces: Any, keys: Sequence[tuple[str, str]], jobs: 
         for package, executable in items[i]:
             interfaces.get(package, executable)
 
-    def remote(i: int) -> bytes | None:
-        import pickle
-
-        try:
-            return pickle.dumps([interfaces.get(p, e) for p, e in items[i]],
-                                protocol=pickle.HIGHEST_PROTOCOL)
-        except Exception:  # noqa: BLE001 - the parent extracts this package itself
-            return None
-
-    def accept(i: int, data: bytes) -> bool:
-        import pickle
-
-        try:
-            values = pickle.loads(data)
-        except Exception:  # noqa: BLE001 - extracted here instead
-            return False
+    def take(i: int, values: Any) -> bool:
         if not isinstance(values, list) or len(values) != len(items[i]):
             return False
         for key, value in zip(items[i], values):
             interfaces.prime(key, value)
         return True
 
-    share(len(items), local, remote, accept, jobs - 1)
+    share_values(len(items), local, lambda i: [interfaces.get(p, e) for p, e in items[i]], take, jobs - 1)
 
 
 # ---- sharing a list of items with forked helpers --------------------------------------------------
+
+def share_values(n: int, local: Any, compute: Any, take: Any, helpers: int) -> None:
+    """``share`` for items whose helper-side result is a value: ``compute(i)`` there, pickled (an
+    item whose computing raises or whose value does not pickle is done here), and ``take(i, value)`` here once unpickled
+    (False, or a value that does not unpickle: done here)."""
+    import pickle
+
+    def remote(i: int) -> bytes | None:
+        try:
+            return pickle.dumps(compute(i), protocol=pickle.HIGHEST_PROTOCOL)
+        except Exception:  # noqa: BLE001 - this process does this item itself
+            return None
+
+    def accept(i: int, data: bytes) -> bool:
+        try:
+            value = pickle.loads(data)
+        except Exception:  # noqa: BLE001 - done here instead
+            return False
+        return bool(take(i, value))
+
+    share(n, local, remote, accept, helpers)
+
 
 def share(n: int, local: Any, remote: Any, accept: Any, helpers: int) -> None:
     """Items ``0..n-1``, each done once: ``local(i)`` in this process, which works from the front,

@@ -91,17 +91,21 @@ def build_project(opts: CheckOptions, cwd: str | None = None, progress: Any = No
     cache = ParseCache.open(opts.cache)  # parse results, package reading, C++ extraction
     packages = ws.build_package_index(root, opts.distro, os.environ.get("AMENT_PREFIX_PATH"), scope,
                                       cache=cache)
-    from physai_lint.parallel import default_jobs, read_packages, resolve_entries
+    from physai_lint.parallel import default_jobs, package_reads, resolve_entries
     from physai_lint.progress import Progress
 
     progress = progress or Progress(False)
     store = FileStore(cache=cache)
     jobs = opts.jobs or default_jobs()
+    # The packages holding checked files are read at the end anyway; with --jobs, on every CPU
+    # first, along with the parsing when that forks (parallel.package_reads).
+    reads = package_reads(packages, packages.names_holding([*paths, *found.launch_files, *found.param_files]),
+                          jobs, files=len(found.launch_files) + len(found.param_files)) \
+        if hasattr(packages, "names_holding") else None
     # Parse every discovered file once, up front: from the disk cache, else in --jobs workers.
-    store.preload(found.launch_files, found.param_files, opts.distro, jobs, progress)
-    if hasattr(packages, "names_holding"):  # read at the end anyway; with --jobs, on every CPU now
-        read_packages(packages, packages.names_holding([*paths, *found.launch_files, *found.param_files]),
-                      jobs, files=len(store.launches) + len(store.params))
+    store.preload(found.launch_files, found.param_files, opts.distro, jobs, progress, reads)
+    if reads is not None:
+        reads.run()  # not taken along (everything parsed from the cache, or too few files)
     gcpolicy.parsing_done()
     diagnostics: list[Diagnostic] = []
 

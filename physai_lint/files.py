@@ -116,8 +116,9 @@ class FileStore:
         return model
 
     def preload(self, launches: Iterable[str], params: Iterable[str], distro: str, jobs: int,
-                progress: Any = None) -> None:
-        """Parse these files now: cached ones from disk, the others in a pool when worth it."""
+                progress: Any = None, side: Any = None) -> None:
+        """Parse these files now: cached ones from disk, the others in a pool when worth it
+        (``side``: other items for the same helpers, see ``parallel.map_jobs``)."""
         from physai_lint import parallel
 
         self.distro = distro
@@ -138,7 +139,7 @@ class FileStore:
         if progress is not None:
             progress.stage("parsing", len(misses))
         import_parsers(misses)  # here, once: forked helpers inherit them instead of importing them
-        for job, (value, ok, data) in zip(misses, parallel.map_jobs(misses, jobs, progress)):
+        for job, (value, ok, data) in zip(misses, parallel.map_jobs(misses, jobs, progress, side)):
             self._store(job, value, ok, data)
             self._preloaded(job, value)
 

@@ -37,7 +37,7 @@ def default_jobs() -> int:
         return max(1, os.cpu_count() or 1)
 
 
-def map_jobs(jobs: Sequence[Any], workers: int, progress: Any = None
+def map_jobs(jobs: Sequence[Any], workers: int, progress: Any = None, side: Side | None = None
              ) -> Iterator[tuple[Any, bool, bytes | None]]:
     """``files.run_job`` over ``jobs`` as (value, cacheable, pickled value or None), always in input
     order; with ``workers`` > 1 and enough jobs, this process and ``workers - 1`` helpers share the
@@ -47,7 +47,10 @@ def map_jobs(jobs: Sequence[Any], workers: int, progress: Any = None
     Forked helpers inherit the texts, so nothing is sent to them, and no thread of this process has
     to feed them: with a ``ProcessPoolExecutor`` the parent's feeder and manager threads waited
     for the GIL while it parsed, its one worker sat idle 40% of the time, and two jobs parsed the
-    1,180-file workspace no faster than one (1.0 s either way; forked: 0.7-0.8 s)."""
+    1,180-file workspace no faster than one (1.0 s either way; forked: 0.7-0.8 s).
+
+    ``side``: other items shared in the same fork when helpers are forked (``Side``), marked done;
+    otherwise left to the caller."""
     from physai_lint.files import run_job
 
     jobs = list(jobs)
@@ -59,7 +62,7 @@ def map_jobs(jobs: Sequence[Any], workers: int, progress: Any = None
                 progress.advance()
         return
     if _can_fork(workers, len(jobs), MIN_PARALLEL_FILES):
-        yield from _forked_jobs(jobs, workers - 1, progress)
+        yield from _forked_jobs(jobs, workers - 1, progress, side)
         return
     pool = _pool(workers - 1)
     if pool is None:
@@ -68,27 +71,40 @@ def map_jobs(jobs: Sequence[Any], workers: int, progress: Any = None
     yield from _shared(jobs, pool, workers, progress)
 
 
-def _forked_jobs(jobs: list[Any], helpers: int, progress: Any
+def _forked_jobs(jobs: list[Any], helpers: int, progress: Any, side: Side | None = None
                  ) -> Iterator[tuple[Any, bool, bytes | None]]:
     """``map_jobs`` with forked helpers (``share``): they inherit the jobs, texts included, so only
-    their pickled results travel, and no thread of this process has to feed them."""
+    their pickled results travel, and no thread of this process has to feed them. The items of
+    ``side`` follow the jobs in the same share: the helpers, working from the back, do them first."""
     from physai_lint.cache import dumps, loads
     from physai_lint.files import run_job
 
-    out: list[tuple[Any, bool, bytes | None] | None] = [None] * len(jobs)
+    m = len(jobs)
+    out: list[tuple[Any, bool, bytes | None] | None] = [None] * m
+    extra = 0
+    if side is not None and not side.done:
+        side.done, extra = True, side.n
+        side_remote, side_accept = _value_io(side.compute, side.take)
 
     def local(i: int) -> None:
+        if i >= m:
+            side.local(i - m)  # type: ignore[union-attr]
+            return
         value, cacheable = run_job(jobs[i], None)
         out[i] = (value, cacheable, None)
         if progress is not None:
             progress.advance()
 
     def remote(i: int) -> bytes | None:
+        if i >= m:
+            return side_remote(i - m)
         value, cacheable = run_job(jobs[i], None)
         data = dumps(value)
         return None if data is None else (b"+" if cacheable else b"-") + data
 
     def accept(i: int, payload: bytes) -> bool:
+        if i >= m:
+            return side_accept(i - m, payload)
         data = payload[1:]
         value = loads(data)
         if value is None:
@@ -98,7 +114,7 @@ def _forked_jobs(jobs: list[Any], helpers: int, progress: Any
             progress.advance()
         return True
 
-    share(len(jobs), local, remote, accept, helpers)
+    share(m + extra, local, remote, accept, helpers)
     yield from out  # type: ignore[misc]  # every item is filled by share
 
 
@@ -542,19 +558,19 @@ def _resolve_shared(entries: list[str], resolve: Any, store: Any, load: Any, pro
 MIN_FORK_PACKAGES = 8
 
 
-def read_packages(index: Any, names: Sequence[str], jobs: int, files: int = 0) -> None:
-    """Read the workspace packages ``names`` (``index.packages[name]``: the manifest, the
-    CMakeLists.txt or setup.py, a listing of the files) before resolution asks for them, shared
-    with forked helpers (``share``) under the conditions of ``run_rules``'s fork; otherwise nothing
-    (they are read when first asked for, as before).
+def package_reads(index: Any, names: Sequence[str], jobs: int, files: int = 0) -> Side | None:
+    """The reading of the workspace packages ``names`` (``index.packages[name]``: the manifest, the
+    CMakeLists.txt or setup.py, a listing of the files) as items to share with forked helpers, to
+    be done before resolution asks for them (``Side.run``, or along with the parsing: ``map_jobs``);
+    None under the conditions of ``run_rules``'s fork not met (they are read when first asked for).
 
     The engine reads every package that holds a checked file anyway (their manifests' problems are
     reported), but lazily: a package a resolution helper read was read there only, and this process
     read it again at the end, alone (~0.2 s of 281 packages on the 1,180-file workspace). Read
-    here, resolution and the rules of every process find them read. A helper sends back each
+    before, resolution and the rules of every process find them read. A helper sends back each
     package pickled with the problems and notes its reading added (``index.adopt_package``)."""
     if not _can_fork(jobs, files) or len(names) < MIN_FORK_PACKAGES:
-        return
+        return None
     names = list(names)
 
     def local(i: int) -> None:
@@ -566,7 +582,7 @@ def read_packages(index: Any, names: Sequence[str], jobs: int, files: int = 0) -
         index.adopt_package(names[i], read)
         return True
 
-    share_values(len(names), local, lambda i: index.read_package_elsewhere(names[i]), take, jobs - 1)
+    return Side(len(names), local, lambda i: index.read_package_elsewhere(names[i]), take, jobs - 1)
 
 
 # ---- node interfaces: extracted before the rules, shared with forked helpers -----------------
@@ -611,8 +627,13 @@ def prefetch_interfaces(interfaces: Any, keys: Sequence[tuple[str, str]], jobs: 
 
 def share_values(n: int, local: Any, compute: Any, take: Any, helpers: int) -> None:
     """``share`` for items whose helper-side result is a value: ``compute(i)`` there, pickled (an
-    item whose computing raises or whose value does not pickle is done here), and ``take(i, value)`` here once unpickled
-    (False, or a value that does not unpickle: done here)."""
+    item whose computing raises or whose value does not pickle is done here), and ``take(i, value)``
+    here once unpickled (False, or a value that does not unpickle: done here)."""
+    share(n, local, *_value_io(compute, take), helpers)
+
+
+def _value_io(compute: Any, take: Any) -> tuple[Any, Any]:
+    """``share_values``' ``remote`` and ``accept``."""
     import pickle
 
     def remote(i: int) -> bytes | None:
@@ -628,7 +649,23 @@ def share_values(n: int, local: Any, compute: Any, take: Any, helpers: int) -> N
             return False
         return bool(take(i, value))
 
-    share(n, local, remote, accept, helpers)
+    return remote, accept
+
+
+class Side:
+    """Items to share (``share_values``) that may ride along with another share: ``map_jobs`` takes
+    them into its fork when it forks, which saves a fork, its copy-on-write faults and a wait for
+    the slower process; ``run`` does them alone otherwise. ``done`` once either has."""
+
+    def __init__(self, n: int, local: Any, compute: Any, take: Any, helpers: int) -> None:
+        self.n, self.local, self.compute, self.take, self.helpers = n, local, compute, take, helpers
+        self.done = False
+
+    def run(self) -> None:
+        """Share the items now, unless a share took them along."""
+        if not self.done:
+            self.done = True
+            share_values(self.n, self.local, self.compute, self.take, self.helpers)
 
 
 def share(n: int, local: Any, remote: Any, accept: Any, helpers: int) -> None:

@@ -137,3 +137,35 @@ def test_without_a_lock_one_helper_still_shares(monkeypatch: pytest.MonkeyPatch)
     _, out = _share_pids(100, 3)
     assert sorted(out) == list(range(100))
     assert len(set(out.values())) == 2, "one helper and this process"
+
+
+@pytest.mark.skipif(not hasattr(os, "fork"), reason="the helper is forked")
+def test_side_items_ride_along_with_the_parsing_and_the_helper_starts_with_them(tmp_path: Path) -> None:
+    """``map_jobs(..., side=)``: the items of another share (the package reads) join the parsing's
+    fork, after the jobs: the helper, working from the back, does them first; each is done once,
+    and what the helper computed is taken here."""
+    jobs = _jobs(tmp_path, 4 * parallel.MIN_PARALLEL_FILES)
+    serial = list(parallel.map_jobs(jobs, 1))
+    here: list[int] = []
+    taken: dict[int, int] = {}
+
+    def take(i: int, value: int) -> bool:
+        taken[i] = value
+        return True
+
+    side = parallel.Side(10, here.append, lambda i: os.getpid(), take, 1)
+    shared = list(parallel.map_jobs(jobs, 2, side=side))
+    assert _plain(shared) == _plain(serial)
+    assert side.done
+    assert sorted(here + list(taken)) == list(range(10)), "each side item is done once"
+    assert taken and set(taken.values()) != {os.getpid()}, "the helper did side items"
+    side.run()  # done already: nothing more
+    assert sorted(here + list(taken)) == list(range(10))
+
+
+def test_side_items_are_left_to_the_caller_when_nothing_forks(tmp_path: Path) -> None:
+    jobs = _jobs(tmp_path, 4)
+    done: list[int] = []
+    side = parallel.Side(3, done.append, lambda i: i, lambda i, v: True, 1)
+    list(parallel.map_jobs(jobs, 2, side=side))  # too few files to fork
+    assert not side.done and not done

@@ -1,4 +1,4 @@
-"""``parallel.read_packages`` and ``parallel.prefetch_interfaces``: work done ahead of resolution
+"""``parallel.package_reads`` and ``parallel.prefetch_interfaces``: work done ahead of resolution
 and of the rules, shared with a forked helper; what the helper did arrives as if done here, and a
 run leaves the same packages, problems and interfaces as the lazy serial path."""
 from __future__ import annotations
@@ -102,7 +102,9 @@ def test_packages_read_by_the_helper_are_those_read_here(low_thresholds: None, t
     shared = _index(tmp_path)
     names = shared.names_holding(files)
     assert names == sorted(f"pkg{i:02d}" for i in range(12))
-    parallel.read_packages(shared, names, 2, files=0)
+    reads = parallel.package_reads(shared, names, 2, files=0)
+    assert reads is not None
+    reads.run()
     assert sorted(shared.packages._read) == sorted(serial.packages._read)
     for name, pkg in serial.packages._read.items():
         assert shared.packages._read[name] == pkg

@@ -4,12 +4,14 @@ T202 publication-without-subscriber, T203 topic-type-mismatch, T204 duplicate-se
 from __future__ import annotations
 
 from collections.abc import Iterator
+from typing import Any
 
 from physai_lint.checks._util import all_nodes
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.graph.system import Endpoint, SystemGraph, build_graph, remap_target, similar
 from physai_lint.model.findings import Diagnostic, Related
-from physai_lint.resolve.model import NodeInstance
+from physai_lint.model.values import literal_of
+from physai_lint.resolve.model import EffRemap, NodeInstance
 
 _CACHE_KEY = "_graphs"
 
@@ -24,16 +26,56 @@ def graphs(ctx: CheckContext) -> list[SystemGraph]:
 
 @rule("T101", "identity-remap")
 def identity_remap(ctx: CheckContext) -> Iterator[Diagnostic]:
-    seen: set[object] = set()
+    # A rule is reported when it is an identity for every node it reaches, in every launch, and
+    # whatever the launch arguments. Autoware's <remap from="input" to="$(var input)"/> maps a
+    # name to itself only while the argument keeps its default "/input". Sides written differently
+    # that meet after expansion in the root namespace are the namespacing idioms: nav2's
+    # ('/tf', 'tf') keeps /tf inside the namespace a PushROSNamespace gives (under a condition on
+    # the namespace argument), ('scan', '/scan') pins the global topic once the node is namespaced;
+    # in a namespace the launch file fixes, they are the same name spelled twice.
+    verdict: dict[object, bool] = {}
+    first: dict[object, EffRemap] = {}
     for _, node in all_nodes(ctx):
         for r in node.remaps:
-            if r.origin != "node" or r.src is None or r.span in seen:
+            if r.origin != "node" or r.src is None:
                 continue
-            src, dst = remap_target(r, node)
-            if (src is not None and src == dst) or r.src == r.dst:
-                seen.add(r.span)
-                yield Diagnostic("T101", r.span, f'remap "{r.src}" -> "{r.dst}" maps a name to itself',
-                                 help="remove the rule, or remap to the topic you meant", key=f"{r.src}")
+            if verdict.get(r.span) is False:
+                continue
+            first.setdefault(r.span, r)
+            written = _written_remap(node, r)
+            if written is not None and not all(_fixed(v) for v in written):
+                verdict[r.span] = False  # a side comes from a launch argument
+            elif r.src == r.dst:
+                verdict[r.span] = True
+            else:
+                src, dst = remap_target(r, node)
+                verdict[r.span] = (src is not None and src == dst and node.namespace not in (None, "/")
+                                   and _namespace_fixed(node))
+    for span, identity in verdict.items():
+        if identity:
+            r = first[span]
+            yield Diagnostic("T101", r.span, f'remap "{r.src}" -> "{r.dst}" maps a name to itself',
+                             help="remove the rule, or remap to the topic you meant", key=f"{r.src}")
+
+
+def _written_remap(node: NodeInstance, r: EffRemap) -> tuple[Any, Any] | None:
+    """The two sides of ``r`` as the launch file wrote them (None when not found)."""
+    for w in getattr(node.action, "remappings", ()):
+        if w.span == r.span:
+            return w.src, w.dst
+    return None
+
+
+def _fixed(value: Any) -> bool:
+    """Written as text only (no launch configuration or other substitution)."""
+    return literal_of(value) is not None
+
+
+def _namespace_fixed(node: NodeInstance) -> bool:
+    """The node's own namespace is absent or written as text: its expansion does not depend on a
+    launch argument (a namespace pushed by an includer is part of that include's context)."""
+    written = getattr(node.action, "namespace", None)
+    return written is None or _fixed(written)
 
 
 @rule("T102", "unused-remap")

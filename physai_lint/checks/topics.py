@@ -214,16 +214,42 @@ def publication_without_subscriber(ctx: CheckContext) -> Iterator[Diagnostic]:
     yield from _dangling(ctx, "publisher", "subscriber", "T202")
 
 
+# Topics rcl gives every node (each publishes /rosout and both ends of /parameter_events): never
+# dangling whatever the interfaces list.
+_IMPLICIT_TOPICS = frozenset({"/rosout", "/parameter_events"})
+# The defaults of the rules' ``ignore-topics`` option (rules/T/T201-*.md, T202-*.md).
+T201_IGNORE_TOPICS = ("/clock", "/tf", "/tf_static", "/parameter_events", "/initialpose", "/goal_pose")
+T202_IGNORE_TOPICS = ("/rosout", "/parameter_events", "/tf", "/tf_static", "/diagnostics", "/joint_states",
+                      "/robot_description")
+
+
 def _dangling(ctx: CheckContext, mine: str, other: str, code: str) -> Iterator[Diagnostic]:
+    from fnmatch import fnmatchcase
+
     seen: set[object] = set()
+    ignore = tuple(ctx.option(code, "ignore-topics",
+                              T201_IGNORE_TOPICS if code == "T201" else T202_IGNORE_TOPICS))
+    near_miss_only = mine == "publisher" and bool(ctx.option(code, "only-with-near-miss", True))
     for g in graphs(ctx):
         if g.has_unknown_endpoints():
             continue  # some node's topics are unknown: it might be the missing end
-        others = {e.resolved for e in g.of_kind(other) if e.resolved}  # type: ignore[arg-type]
+        if len({e.node for e in g.endpoints}) < 2:
+            continue  # a launch of one node (a filter, a driver): its inputs and outputs are others'
+        by_topic: dict[str, set[str]] = {}  # topic -> nodes with an endpoint of the other kind
+        for o in g.of_kind(other):  # type: ignore[arg-type]
+            if o.resolved:
+                by_topic.setdefault(o.resolved, set()).add(o.node)
+        others = set(by_topic)
+        # A near miss is another node's topic: a filter's "output/pointcloud" is not a misspelt
+        # "input/pointcloud" of the same filter (its own topics are left out of the suggestions).
+        own: dict[str, set[str]] = {}
+        for topic, nodes in by_topic.items():
+            if len(nodes) == 1:
+                own.setdefault(next(iter(nodes)), set()).add(topic)
         for e in g.of_kind(mine):  # type: ignore[arg-type]
             if e.resolved is None or e.resolved in others or e.resolved.split("/")[-1].startswith("_"):
                 continue
-            if e.resolved in ("/rosout", "/parameter_events", "/tf", "/tf_static", "/clock"):
+            if e.resolved in _IMPLICIT_TOPICS or any(fnmatchcase(e.resolved, p) for p in ignore):
                 continue
             node = g.node(e.node)
             span = node.span
@@ -232,8 +258,8 @@ def _dangling(ctx: CheckContext, mine: str, other: str, code: str) -> Iterator[D
             if (span, e.resolved) in seen:
                 continue
             seen.add((span, e.resolved))
-            close = similar(e.resolved, others, 0.8 if mine == "publisher" else 0.6)
-            if mine == "publisher" and not close:
+            close = similar(e.resolved, others - own.get(e.node, set()), 0.8 if mine == "publisher" else 0.6)
+            if near_miss_only and not close:
                 continue  # an output nobody reads is normal (sensors, diagnostics); a near miss is not
             hint = (" (did you mean " + " or ".join(f'"{c}"' for c in close) + "?)") if close else ""
             verb, missing = ("subscribes to", "nothing publishes it") if mine == "subscriber" else (

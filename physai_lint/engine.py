@@ -96,6 +96,9 @@ def build_project(opts: CheckOptions, cwd: str | None = None, progress: Any = No
 
     progress = progress or Progress(False)
     store = FileStore(cache=cache)
+    max_bytes = opts.rule_options.get("X002", {}).get("max-bytes")
+    if max_bytes is not None:
+        store.max_bytes = int(max_bytes)
     jobs = opts.jobs or default_jobs()
     # The packages holding checked files are read at the end anyway; with --jobs, on every CPU
     # first, along with the parsing when that forks (parallel.package_reads).

@@ -20,6 +20,13 @@ from physai_lint.model.span import Span
 MAX_FILE_BYTES = 64 * 1024 * 1024
 
 
+def _size(n: int) -> str:
+    mib = 1024 * 1024
+    if n % mib == 0:
+        return f"{n // mib} MiB"
+    return f"{n / mib:.1f} MiB" if n >= mib else f"{n:,} bytes"
+
+
 def launch_format(path: str) -> str | None:
     """The frontend for a path by extension (``AnyLaunchDescriptionSource`` picks by extension)."""
     low = path.lower()
@@ -44,6 +51,7 @@ class FileStore:
     param_diagnostics: list[Diagnostic] = field(default_factory=list)  # crashes of the param loader
     cache: Any = None  # a cache.ParseCache, or None
     distro: str = ""  # what Python launch files read as ROS_DISTRO; set by preload
+    max_bytes: int = MAX_FILE_BYTES  # larger files are reported (X002's ``max-bytes``), not read
 
     def text(self, path: str) -> str | None:
         if path in self.texts:
@@ -55,12 +63,11 @@ class FileStore:
         span = Span.whole_file(path)
         try:
             size = os.path.getsize(path)
-            if size > MAX_FILE_BYTES:
-                self._fail(path, span, f"file is {size // (1024 * 1024)} MiB, larger than the "
-                           f"{MAX_FILE_BYTES // (1024 * 1024)} MiB limit")
+            if size > self.max_bytes:
+                self._fail(path, span, f"file is {_size(size)}, larger than the {_size(self.max_bytes)} limit")
                 return None
             with open(path, "rb") as fh:
-                data = fh.read(MAX_FILE_BYTES + 1)
+                data = fh.read(self.max_bytes + 1)
         except OSError as exc:
             self._fail(path, span, f"cannot read file: {exc.strerror or exc}")
             return None

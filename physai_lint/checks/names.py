@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterator
+from typing import Any
 
 from physai_lint.checks._util import all_nodes
 from physai_lint.checks.base import CheckContext, rule
@@ -144,20 +145,40 @@ def invalid_remap(ctx: CheckContext) -> Iterator[Diagnostic]:
 
 @rule("N106", "name-style")
 def name_style(ctx: CheckContext) -> Iterator[Diagnostic]:
+    double = bool(ctx.option("N106", "double-underscore", True))
+    trailing = bool(ctx.option("N106", "trailing-underscore", True))
+    upper = bool(ctx.option("N106", "uppercase", False))
     seen: set[object] = set()
     for _, node in all_nodes(ctx):
-        for what, value, span in (("node name", node.name if node.name_explicit else None, node.spans.get("name")),
-                                  ("namespace", node.namespace if node.namespace_explicit else None,
-                                   node.spans.get("namespace"))):
-            if not value or span is None or span in seen:
+        named: list[tuple[str, str | None, Any]] = [
+            ("node name", node.name if node.name_explicit else None, node.spans.get("name")),
+            ("namespace", node.namespace if node.namespace_explicit else None, node.spans.get("namespace"))]
+        for r in node.remaps:
+            if r.origin == "node":
+                named += [("remapped name", r.src, r.span), ("remap target", r.dst, r.span)]
+        for what, value, span in named:
+            if not value or span is None or (span, value) in seen or value.startswith("__"):
                 continue
-            tokens = [t for t in value.split("/") if t]
-            if any("__" in t or t.endswith("_") for t in tokens):
-                seen.add(span)
+            if _remap_problem(value) if what.startswith("remap") else False:
+                continue  # invalid: N105 reports it
+            tokens = [t for t in value.lstrip("~").split("/") if t and t not in _SPECIAL]
+            problems = []
+            if double and any("__" in t for t in tokens):
+                problems.append('a repeated "_"')
+            if trailing and any(t.endswith("_") for t in tokens):
+                problems.append('a part ending in "_"')
+            if upper and any(c.isupper() for t in tokens for c in t):
+                problems.append("capital letters")
+            if problems:
+                seen.add((span, value))
                 yield Diagnostic("N106", span,
-                                 f'{what} "{value}" uses "__" or a trailing "_" (allowed, but the ROS 2 '
-                                 "naming design reserves them)",
-                                 help="use single underscores between words", key=value)
+                                 f'{what} "{value}" has {" and ".join(problems)} (rcl accepts it, but the '
+                                 "ROS 2 naming design rules it out)",
+                                 help="use lowercase words joined by single underscores", key=value)
+
+
+# rcl's special names, kept as they are by N106
+_SPECIAL = frozenset({"__node", "__ns", "__name"})
 
 
 _KNOWN_SUBST = ("node", "ns", "namespace")

@@ -104,15 +104,24 @@ def _validate(ctx: CheckContext, choices: bool) -> Iterator[Diagnostic]:
             key=f"{node.fqn}:{ep.name}")
 
 
+# The default of P109's ``ignore`` option (rules/P/P109-undeclared-parameter.md): parameters every
+# node takes without declaring them in its sources (rclcpp declares use_sim_time; QoS overrides
+# are read by the publishers and subscriptions).
+P109_IGNORE = ("use_sim_time", "qos_overrides.*")
+
+
 @rule("P109", "undeclared-parameter")
 def undeclared(ctx: CheckContext) -> Iterator[Diagnostic]:
+    from fnmatch import fnmatchcase
+
     seen: set[object] = set()
+    ignore = tuple(ctx.option("P109", "ignore", P109_IGNORE))
     for _, node in nodes_with_params(ctx):
         iface = interface(ctx, node)
         if iface is None or not iface.parameters_complete or node.fqn is None:
             continue
         for name, ep in sorted(effective(ctx, node).items()):
-            if name in ("use_sim_time",) or name.startswith(("qos_overrides.", "ros__")):
+            if name.startswith("ros__") or any(fnmatchcase(name, p) for p in ignore):
                 continue
             if iface.is_declared(name) is not False or ep.origin is None:
                 continue

@@ -7,7 +7,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from physai_lint.errors import ConfigError, UsageError
-from physai_lint.files import FileStore, internal_error
+from physai_lint.files import MAX_FILE_BYTES, FileStore, internal_error
 from physai_lint.model.findings import SEVERITY_RANK, Diagnostic, Finding
 from physai_lint.model.span import Span
 
@@ -95,10 +95,8 @@ def build_project(opts: CheckOptions, cwd: str | None = None, progress: Any = No
     from physai_lint.progress import Progress
 
     progress = progress or Progress(False)
-    store = FileStore(cache=cache)
-    max_bytes = opts.rule_options.get("X002", {}).get("max-bytes")
-    if max_bytes is not None:
-        store.max_bytes = int(max_bytes)
+    max_bytes = int(opts.rule_options.get("X002", {}).get("max-bytes", MAX_FILE_BYTES))
+    store = FileStore(cache=cache, max_bytes=max_bytes)
     jobs = opts.jobs or default_jobs()
     # The packages holding checked files are read at the end anyway; with --jobs, on every CPU
     # first, along with the parsing when that forks (parallel.package_reads).

@@ -562,7 +562,7 @@ def package_reads(index: Any, names: Sequence[str], jobs: int, files: int = 0) -
     """The reading of the workspace packages ``names`` (``index.packages[name]``: the manifest, the
     CMakeLists.txt or setup.py, a listing of the files) as items to share with forked helpers, to
     be done before resolution asks for them (``Side.run``, or along with the parsing: ``map_jobs``);
-    None under the conditions of ``run_rules``'s fork not met (they are read when first asked for).
+    None when the conditions of ``run_rules``'s fork are not met (they are read when first asked for).
 
     The engine reads every package that holds a checked file anyway (their manifests' problems are
     reported), but lazily: a package a resolution helper read was read there only, and this process

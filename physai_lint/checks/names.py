@@ -159,7 +159,7 @@ def name_style(ctx: CheckContext) -> Iterator[Diagnostic]:
         for what, value, span in named:
             if not value or span is None or (span, value) in seen or value.startswith("__"):
                 continue
-            if _remap_problem(value) if what.startswith("remap") else False:
+            if what.startswith("remap") and _remap_problem(value):
                 continue  # invalid: N105 reports it
             tokens = [t for t in value.lstrip("~").split("/") if t and t not in _SPECIAL]
             problems = []

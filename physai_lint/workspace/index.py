@@ -269,7 +269,7 @@ class PackageIndex:
         return sorted({name for path in paths for name in self._names_holding(posixpath.dirname(_norm(path)))})
 
     def read_package_elsewhere(self, name: str) -> tuple[Any, list[Any], list[Any]]:
-        """Read package ``name`` in a forked helper (``parallel.read_packages``): the package (None
+        """Read package ``name`` in a forked helper (``parallel.package_reads``): the package (None
         when unreadable) and the problems and notes its reading added, for ``adopt_package``."""
         problems, notes = len(self.problems), len(self.notes)
         pkg = self.packages.get(name)

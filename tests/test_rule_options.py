@@ -2,8 +2,9 @@
 and the rules' defaults are the documented ones."""
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any
 
 import pytest
 
@@ -107,11 +108,11 @@ def test_p109_ignore(tmp_path, demo_package) -> None:
 
 def test_n106_switches(tmp_path, demo_package) -> None:
     found = _codes(_run(tmp_path, demo_package), "N106")
-    assert found == ['namespace "/Front__Lidar_" has a repeated "_" and a part ending in "_" (rcl accepts '
-                     'it, but the ROS 2 naming design rules it out)']
+    assert found == [('namespace "/Front__Lidar_" has a repeated "_" and a part ending in "_" (rcl accepts '
+                      'it, but the ROS 2 naming design rules it out)')]
     found = _codes(_run(tmp_path, demo_package, n106={"double-underscore": False, "uppercase": True}), "N106")
-    assert found == ['namespace "/Front__Lidar_" has a part ending in "_" and capital letters (rcl accepts '
-                     'it, but the ROS 2 naming design rules it out)']
+    assert found == [('namespace "/Front__Lidar_" has a part ending in "_" and capital letters (rcl accepts '
+                      'it, but the ROS 2 naming design rules it out)')]
     assert _codes(_run(tmp_path, demo_package, n106={"double-underscore": False,
                                                      "trailing-underscore": False}), "N106") == []
 

@@ -4,8 +4,8 @@ and ``('scan', '/scan')`` only meet while the namespace is empty, and a side or 
 from a launch argument is written for the values the argument is there to take."""
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
-from typing import Callable
 
 from physai_lint.engine import CheckOptions, run_check
 

@@ -53,11 +53,14 @@ def test_two_jobs_give_the_serial_results_in_order_and_the_parent_takes_a_share(
     assert _plain(shared) == _plain(serial)
     assert here, "the parent parsed nothing itself"
     assert len(here) < len(jobs), "the helper parsed nothing"
-    # it works from the front: what it parsed is a head of the input
-    assert here == [j.path for j in jobs[:len(here)]]
+    # it works from the front of the travel order (parameter files first, whose results cost
+    # the most to send back): what it parsed is a head of that order
+    ordered = sorted(jobs, key=parallel._travel_rank)
+    assert ordered[0].kind == "params" and ordered[-1].kind == "launch"
+    assert here == [j.path for j in ordered[:len(here)]]
     # its own results come without a pickle; the helper's with theirs (for the cache)
-    assert all(data is None for _, _, data in shared[:len(here)])
-    assert all(data is not None for _, _, data in shared[len(here):])
+    mine = set(here)
+    assert all((data is None) == (job.path in mine) for job, (_, _, data) in zip(jobs, shared))
 
 
 def test_few_jobs_stay_in_this_process(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:

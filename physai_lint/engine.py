@@ -124,10 +124,10 @@ def build_project(opts: CheckOptions, cwd: str | None = None, progress: Any = No
         progress.advance()
         return resolve_quiet(entry)
 
-    def resolve_many(entries: list[str]) -> list[Any]:
+    def resolve_many(entries: list[str], leaves: bool) -> list[Any]:
         # with --jobs, forked helpers take a share (physai_lint/parallel.py)
         return resolve_entries(entries, resolve_quiet, store, loader, jobs, progress,
-                               files=len(store.launches) + len(store.params))
+                               files=len(store.launches) + len(store.params), leaves=leaves)
 
     progress.stage("resolving", len(launch_files))
     launches = choose_roots(launch_files, loader, resolve, progress.advance, resolve_many)

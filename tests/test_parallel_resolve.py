@@ -67,6 +67,21 @@ def test_one_job_or_few_entries_stay_in_this_process(low_thresholds: None,
 
 
 @forks
+def test_leaves_fork_only_when_there_are_many_of_them(low_thresholds: None,
+                                                      monkeypatch: pytest.MonkeyPatch) -> None:
+    """Entries that include nothing resolve in a fraction of a millisecond: a fork is not worth
+    it below ``MIN_FORK_LEAVES`` of them, though it is for as many includers."""
+    entries = [f"e{i:02d}" for i in range(40)]
+    monkeypatch.setattr(parallel, "MIN_FORK_LEAVES", 41)
+    store = _Store()
+    out = parallel.resolve_entries(entries, _toy(store), store, print, 2, leaves=True)
+    assert [e for e, _ in out] == entries and {pid for _, pid in out} == {os.getpid()}
+    monkeypatch.setattr(parallel, "MIN_FORK_LEAVES", 40)
+    out = parallel.resolve_entries(entries, _toy(store), store, lambda p: None, 2, leaves=True)
+    assert [e for e, _ in out] == entries and len({pid for _, pid in out}) == 2
+
+
+@forks
 def test_a_helper_that_dies_loses_nothing(low_thresholds: None) -> None:
     parent = os.getpid()
 

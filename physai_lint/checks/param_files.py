@@ -48,34 +48,93 @@ def not_installed(ctx: CheckContext) -> Iterator[Diagnostic]:
 
 @rule("P103", "parameter-file-no-match")
 def no_match(ctx: CheckContext) -> Iterator[Diagnostic]:
-    from physai_lint.params.effective import file_binds
+    from physai_lint.params.effective import matching_keys
     from physai_lint.params.match import explain_no_match
 
     loaders: dict[str, list[tuple[object, object]]] = {}
-    for _, node in all_nodes(ctx, include_inactive=False):
+    # every node that reads the file, also through a file a substitution derives from it
+    # (RewrittenYaml) or under a condition that is false with the default arguments
+    readers: dict[str, list[object]] = {}
+    for _, node in all_nodes(ctx):
         for src in node.param_sources:
-            if isinstance(src, ResolvedParamFile) and src.status == "ok" and src.source in ctx.param_files:
-                loaders.setdefault(src.source, []).append((node, src))
+            if not isinstance(src, ResolvedParamFile) or src.status != "ok":
+                continue
+            path = src.source if src.source in ctx.param_files else src.derived_from
+            if path not in ctx.param_files:
+                continue
+            readers.setdefault(path, []).append(node)  # type: ignore[arg-type]
+            if node.active is not False and src.source == path:
+                loaders.setdefault(path, []).append((node, src))
     for path, users in sorted(loaders.items()):
         model = ctx.param_files[path]
         if not model.ok or not model.blocks:
             continue
-        nodes = [n for n, _ in users]
-        if any(n.fqn is None for n in nodes):  # type: ignore[attr-defined]
+        if any(n.fqn is None for n, _ in users):  # type: ignore[attr-defined]
             continue
-        if any(file_binds(n.fqn, model, n.kind == "composable_node") for n in nodes):  # type: ignore[attr-defined]
+        bound = {id(b) for n, _ in users
+                 for b in matching_keys(n.fqn, model, n.kind == "composable_node")}  # type: ignore[attr-defined]
+        if not bound:
+            yield _whole_file(path, model, users, explain_no_match)
+        elif all(n.fqn is not None for n in readers[path]):  # type: ignore[attr-defined]
+            yield from _stray_keys(path, model, users, readers[path], explain_no_match)
+
+
+def _whole_file(path: str, model: object, users: list[tuple[object, object]], explain_no_match: object
+                ) -> Diagnostic:
+    """No key of the file matches any node that loads it."""
+    block = model.blocks[0]  # type: ignore[attr-defined]
+    node, src = users[0]
+    fqns = ", ".join(sorted({f'"{n.fqn}"' for n, _ in users}))  # type: ignore[attr-defined]
+    explain = explain_no_match(block.key, node.fqn)  # type: ignore[attr-defined,operator]
+    return Diagnostic(
+        "P103", block.key_span,
+        f'no node key of "{_rel(path)}" matches the node(s) that load it ({fqns}): {explain}; '
+        "the whole file is silently ignored",
+        help=f'key the file by the node\'s full name, e.g. "{node.fqn}:", or use a wildcard such as '  # type: ignore[attr-defined]
+             f'"/**/{node.name}:"',  # type: ignore[attr-defined]
+        related=(Related(src.span, "loaded here"),),  # type: ignore[attr-defined]
+        key=f"{_rel(path)}:{block.key}")
+
+
+def _stray_keys(path: str, model: object, users: list[tuple[object, object]], readers: list[object],
+                explain_no_match: object) -> Iterator[Diagnostic]:
+    """Keys meant for a node that loads the file but gets none of its own parameters from it: the
+    key names it with a typo, or without (or with another) namespace. A key for a node of another
+    name is left alone: the file may be shared with nodes that launch files not checked here start."""
+    from physai_lint.closematch import close_matches
+    from physai_lint.params.effective import matching_keys
+
+    def own(key: str) -> str:
+        return key.rstrip("/").rsplit("/", 1)[-1]
+
+    matched = {id(b) for n in readers
+               for b in matching_keys(n.fqn, model, n.kind == "composable_node")}  # type: ignore[attr-defined]
+    # nodes that load the file and get no key of their own from it (wildcard keys aside)
+    unserved: dict[str, tuple[object, object]] = {}
+    for node, src in users:
+        own_keys = [b for b in matching_keys(node.fqn, model, node.kind == "composable_node")  # type: ignore[attr-defined]
+                    if "*" not in own(b.key)]
+        if not own_keys and node.name:  # type: ignore[attr-defined]
+            unserved.setdefault(node.name, (node, src))  # type: ignore[attr-defined]
+    if not unserved:
+        return
+    names = tuple(sorted(unserved))
+    for block in model.blocks:  # type: ignore[attr-defined]
+        name = own(block.key)
+        if id(block) in matched or "*" in name or not name:
             continue
-        block = model.blocks[0]
-        node, src = users[0]
-        fqns = ", ".join(sorted({f'"{n.fqn}"' for n in nodes}))  # type: ignore[attr-defined]
-        explain = explain_no_match(block.key, node.fqn)  # type: ignore[attr-defined]
+        hit = name if name in unserved else next(iter(close_matches(name, names, 1, 0.8)), None)
+        if hit is None:
+            continue
+        node, src = unserved[hit]
+        explain = explain_no_match(block.key, node.fqn)  # type: ignore[attr-defined,operator]
         yield Diagnostic(
             "P103", block.key_span,
-            f'no node key of "{_rel(path)}" matches the node(s) that load it ({fqns}): {explain}; '
-            "the whole file is silently ignored",
-            help=f'key the file by the node\'s full name, e.g. "{node.fqn}:", or use a wildcard such as '  # type: ignore[attr-defined]
+            f'node key "{block.key}" of "{_rel(path)}" matches none of the nodes that load the file: '
+            f"{explain}; the parameters under it are silently ignored",
+            help=f'key it by the node\'s full name, e.g. "{node.fqn.lstrip("/")}:", or use a wildcard such as '  # type: ignore[attr-defined]
                  f'"/**/{node.name}:"',  # type: ignore[attr-defined]
-            related=(Related(src.span, "loaded here"),),  # type: ignore[attr-defined]
+            related=(Related(src.span, f"{node.fqn} loads it here"),),  # type: ignore[attr-defined]
             key=f"{_rel(path)}:{block.key}")
 
 

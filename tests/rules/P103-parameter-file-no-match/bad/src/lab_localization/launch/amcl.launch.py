@@ -6,6 +6,7 @@ from launch_ros.substitutions import FindPackageShare
 
 def generate_launch_description():
     params = PathJoinSubstitution([FindPackageShare('lab_localization'), 'config', 'amcl.yaml'])
+    robot = PathJoinSubstitution([FindPackageShare('lab_localization'), 'config', 'robot.yaml'])
     return LaunchDescription([
         Node(
             package='nav2_amcl',
@@ -13,4 +14,7 @@ def generate_launch_description():
             name='amcl',
             parameters=[params],
         ),
+        # robot.yaml is shared: its "/**" key reaches this node, its own key must name it fully
+        Node(package='nav2_map_server', executable='map_server', name='map_server',
+             namespace='robot1', parameters=[robot]),
     ])

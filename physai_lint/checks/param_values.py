@@ -2,7 +2,8 @@
 P108 parameter-not-in-choices, P109 undeclared-parameter, P111 inconsistent-use-sim-time."""
 from __future__ import annotations
 
-from typing import Any, Iterator
+from collections.abc import Iterator
+from typing import Any
 
 from physai_lint.checks._params import decl_source as _source
 from physai_lint.checks._params import effective, interface, nodes_with_params
@@ -23,14 +24,26 @@ def _article(word: str | None) -> str:
     return "an" if (word or "x")[0] in "aeiou" else "a"
 
 
+def _builtin() -> dict[str, Any]:
+    """Parameters every ROS 2 node declares, whatever its sources say: the clock's
+    ``use_sim_time``, a bool (rclcpp ``TimeSource::NodeState::attachNode``, rclpy
+    ``TimeSource.attach_node``: declared with the default false and no dynamic typing, so a value
+    of another type makes the node throw InvalidParameterTypeException at start-up)."""
+    from physai_lint.interfaces.model import ParamDecl
+
+    return {"use_sim_time": ParamDecl("use_sim_time", "bool", default=False, has_default=True,
+                                      source="the ROS 2 client library's TimeSource")}
+
+
 def _declared(ctx: CheckContext) -> Iterator[tuple[Any, Any, Any, Any]]:
-    """(node, effective param, declaration, interface) for params whose declaration is known."""
+    """(node, effective param, declaration, interface) for params whose declaration is known:
+    from the node's interface, or one every node declares (``_builtin``)."""
+    builtin = _builtin()
     for _, node in nodes_with_params(ctx):
         iface = interface(ctx, node)
-        if iface is None or not iface.parameters:
-            continue
+        declared = (iface.parameters if iface is not None else None) or {}
         for name, ep in sorted(effective(ctx, node).items()):
-            decl = iface.parameters.get(name)
+            decl = declared.get(name) or builtin.get(name)
             if decl is not None and ep.value is not None and ep.origin is not None:
                 yield node, ep, decl, iface
 
@@ -52,6 +65,9 @@ def type_mismatch(ctx: CheckContext) -> Iterator[Diagnostic]:
             fix = f" (write {ep.value}.0)"
         elif decl.type == "double_array" and got == "integer_array":
             fix = " (write every item with a decimal point, e.g. 1.0)"
+        elif decl.type == "bool" and got == "string" and ep.value.strip().lower() in ("true", "false"):
+            word = ep.value.strip().lower()
+            fix = f" (write {word.title() if ep.origin.file.endswith('.py') else word} without quotes)"
         where = f" ({_source(decl.source)})" if decl.source else ""
         yield Diagnostic(
             "P105", ep.origin,

@@ -5,9 +5,6 @@ start, and so are keys that a node reading the file only under another argument 
 from __future__ import annotations
 
 from collections.abc import Callable
-from pathlib import Path
-
-from physai_lint.engine import CheckOptions, run_check
 
 LAUNCH = """
 from launch import LaunchDescription
@@ -31,14 +28,12 @@ def generate_launch_description():
 """
 
 
-def _p103(tmp_path: Path, demo_package: Callable[[dict[str, str]], Path], yaml: str) -> list[tuple[int, str]]:
-    pkg = demo_package({"launch/a.launch.py": LAUNCH, "config/shared.yaml": yaml})
-    opts = CheckOptions(paths=[str(pkg / "launch/a.launch.py")], workspace=str(tmp_path), cache=False)
-    return sorted((f.span.line, f.message) for f in run_check(opts).findings if f.code == "P103")
+def _p103(demo_findings: Callable[..., list[tuple[int, str]]], yaml: str) -> list[tuple[int, str]]:
+    return demo_findings({"launch/a.launch.py": LAUNCH, "config/shared.yaml": yaml}, "launch/a.launch.py", "P103")
 
 
-def test_a_misspelt_key_of_a_node_that_gets_nothing_else_is_reported(tmp_path, demo_package) -> None:
-    found = _p103(tmp_path, demo_package, (
+def test_a_misspelt_key_of_a_node_that_gets_nothing_else_is_reported(demo_findings) -> None:
+    found = _p103(demo_findings, (
         "/**:\n  ros__parameters:\n    use_sim_time: true\n"
         "talker:\n  ros__parameters:\n    rate: 10\n"
         "listner:\n  ros__parameters:\n    depth: 5\n"))
@@ -47,10 +42,10 @@ def test_a_misspelt_key_of_a_node_that_gets_nothing_else_is_reported(tmp_path, d
 
 
 def test_keys_for_other_nodes_and_for_nodes_started_under_other_arguments_are_silent(
-        tmp_path, demo_package) -> None:
+        demo_findings) -> None:
     # "mapper:" is one typo from "mapper2", which gets only "/**": but "/mapper" reads the file
     # when with_mapper is true
-    assert _p103(tmp_path, demo_package, (
+    assert _p103(demo_findings, (
         "/**:\n  ros__parameters:\n    use_sim_time: true\n"
         "talker:\n  ros__parameters:\n    rate: 10\n"
         "listener:\n  ros__parameters:\n    depth: 5\n"
@@ -58,9 +53,9 @@ def test_keys_for_other_nodes_and_for_nodes_started_under_other_arguments_are_si
         "controller_server:\n  ros__parameters:\n    controller_frequency: 20.0\n")) == []
 
 
-def test_a_key_for_a_node_that_has_its_own_key_is_left_alone(tmp_path, demo_package) -> None:
+def test_a_key_for_a_node_that_has_its_own_key_is_left_alone(demo_findings) -> None:
     # "/talker" gets "talker:"; "talkerr:" might be for a node of that name started elsewhere
-    assert _p103(tmp_path, demo_package, (
+    assert _p103(demo_findings, (
         "talker:\n  ros__parameters:\n    rate: 10\n"
         "listener:\n  ros__parameters:\n    depth: 5\n"
         "talkerr:\n  ros__parameters:\n    rate: 20\n")) == []

@@ -5,9 +5,6 @@ stops the node; a substitution is typed by YAML and gives a bool."""
 from __future__ import annotations
 
 from collections.abc import Callable
-from pathlib import Path
-
-from physai_lint.engine import CheckOptions, run_check
 
 LAUNCH = """
 from launch import LaunchDescription
@@ -27,15 +24,12 @@ def generate_launch_description():
 """
 
 
-def _p105(tmp_path: Path, demo_package: Callable[[dict[str, str]], Path], yaml: str, value: str
-          ) -> list[tuple[int, str]]:
-    pkg = demo_package({"launch/a.launch.py": LAUNCH % value, "config/p.yaml": yaml})
-    opts = CheckOptions(paths=[str(pkg / "launch/a.launch.py")], workspace=str(tmp_path), cache=False)
-    return sorted((f.span.line, f.message) for f in run_check(opts).findings if f.code == "P105")
+def _p105(demo_findings: Callable[..., list[tuple[int, str]]], yaml: str, value: str) -> list[tuple[int, str]]:
+    return demo_findings({"launch/a.launch.py": LAUNCH % value, "config/p.yaml": yaml}, "launch/a.launch.py", "P105")
 
 
-def test_string_values_of_use_sim_time_are_reported(tmp_path, demo_package) -> None:
-    found = _p105(tmp_path, demo_package, 'from_file:\n  ros__parameters:\n    use_sim_time: "true"\n',
+def test_string_values_of_use_sim_time_are_reported(demo_findings) -> None:
+    found = _p105(demo_findings, 'from_file:\n  ros__parameters:\n    use_sim_time: "true"\n',
                   "'true'")
     assert [line for line, _ in found] == [3, 14]
     for _, message in found:
@@ -43,6 +37,6 @@ def test_string_values_of_use_sim_time_are_reported(tmp_path, demo_package) -> N
     assert "write true without quotes" in found[0][1] and "write True without quotes" in found[1][1]
 
 
-def test_plain_and_substituted_values_of_use_sim_time_are_silent(tmp_path, demo_package) -> None:
-    assert _p105(tmp_path, demo_package, "from_file:\n  ros__parameters:\n    use_sim_time: True\n",
+def test_plain_and_substituted_values_of_use_sim_time_are_silent(demo_findings) -> None:
+    assert _p105(demo_findings, "from_file:\n  ros__parameters:\n    use_sim_time: True\n",
                  "LaunchConfiguration('use_sim_time')") == []

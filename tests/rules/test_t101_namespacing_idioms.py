@@ -4,11 +4,6 @@ and ``('scan', '/scan')`` only meet while the namespace is empty, and a side or 
 from a launch argument is written for the values the argument is there to take."""
 from __future__ import annotations
 
-from collections.abc import Callable
-from pathlib import Path
-
-from physai_lint.engine import CheckOptions, run_check
-
 NAV2_IDIOM = """
 from launch import LaunchDescription
 from launch.actions import DeclareLaunchArgument, GroupAction
@@ -79,30 +74,23 @@ def _includer(namespaces: list[str]) -> str:
     return f"<launch>\n{groups}</launch>\n"
 
 
-def _t101(tmp_path: Path, demo_package: Callable[[dict[str, str]], Path], entry: str,
-          files: dict[str, str]) -> list[tuple[int, str]]:
-    pkg = demo_package(files)
-    opts = CheckOptions(paths=[str(pkg / entry)], workspace=str(tmp_path), cache=False)
-    return sorted((f.span.line, f.message) for f in run_check(opts).findings if f.code == "T101")
+def test_the_nav2_namespacing_idioms_are_silent(demo_findings) -> None:
+    assert demo_findings({"launch/a.launch.py": NAV2_IDIOM}, "launch/a.launch.py", "T101") == []
 
 
-def test_the_nav2_namespacing_idioms_are_silent(tmp_path, demo_package) -> None:
-    assert _t101(tmp_path, demo_package, "launch/a.launch.py", {"launch/a.launch.py": NAV2_IDIOM}) == []
-
-
-def test_identities_the_launch_file_fixes_are_reported(tmp_path, demo_package) -> None:
-    found = _t101(tmp_path, demo_package, "launch/a.launch.py", {"launch/a.launch.py": FIXED})
+def test_identities_the_launch_file_fixes_are_reported(demo_findings) -> None:
+    found = demo_findings({"launch/a.launch.py": FIXED}, "launch/a.launch.py", "T101")
     assert [line for line, _ in found] == [12, 14]
     assert found[0][1] == 'remap "cmd_vel" -> "cmd_vel" maps a name to itself'
     assert found[1][1] == 'remap "scan" -> "/robot1/scan" maps a name to itself'
 
 
-def test_sides_from_launch_arguments_are_silent(tmp_path, demo_package) -> None:
-    assert _t101(tmp_path, demo_package, "launch/a.launch.xml", {"launch/a.launch.xml": XML_ARGUMENT}) == []
+def test_sides_from_launch_arguments_are_silent(demo_findings) -> None:
+    assert demo_findings({"launch/a.launch.xml": XML_ARGUMENT}, "launch/a.launch.xml", "T101") == []
 
 
-def test_a_rule_is_reported_only_when_every_include_makes_it_an_identity(tmp_path, demo_package) -> None:
+def test_a_rule_is_reported_only_when_every_include_makes_it_an_identity(demo_findings) -> None:
     files = {"launch/driver.launch.xml": INCLUDED, "launch/one.launch.xml": _includer(["r1"]),
              "launch/two.launch.xml": _includer(["r1", "r2"])}
-    assert [line for line, _ in _t101(tmp_path, demo_package, "launch/one.launch.xml", files)] == [3]
-    assert _t101(tmp_path, demo_package, "launch/two.launch.xml", files) == []
+    assert [line for line, _ in demo_findings(files, "launch/one.launch.xml", "T101")] == [3]
+    assert demo_findings(files, "launch/two.launch.xml", "T101") == []

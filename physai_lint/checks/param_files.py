@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import os
 from collections.abc import Iterator
+from typing import Any
 
 from physai_lint.checks._util import all_nodes
 from physai_lint.checks._util import relpath as _rel
@@ -49,12 +50,11 @@ def not_installed(ctx: CheckContext) -> Iterator[Diagnostic]:
 @rule("P103", "parameter-file-no-match")
 def no_match(ctx: CheckContext) -> Iterator[Diagnostic]:
     from physai_lint.params.effective import matching_keys
-    from physai_lint.params.match import explain_no_match
 
-    loaders: dict[str, list[tuple[object, object]]] = {}
+    loaders: dict[str, list[tuple[Any, Any]]] = {}
     # every node that reads the file, also through a file a substitution derives from it
     # (RewrittenYaml) or under a condition that is false with the default arguments
-    readers: dict[str, list[object]] = {}
+    readers: dict[str, list[Any]] = {}
     for _, node in all_nodes(ctx):
         for src in node.param_sources:
             if not isinstance(src, ResolvedParamFile) or src.status != "ok":
@@ -62,64 +62,63 @@ def no_match(ctx: CheckContext) -> Iterator[Diagnostic]:
             path = src.source if src.source in ctx.param_files else src.derived_from
             if path not in ctx.param_files:
                 continue
-            readers.setdefault(path, []).append(node)  # type: ignore[arg-type]
+            readers.setdefault(path, []).append(node)
             if node.active is not False and src.source == path:
                 loaders.setdefault(path, []).append((node, src))
     for path, users in sorted(loaders.items()):
         model = ctx.param_files[path]
         if not model.ok or not model.blocks:
             continue
-        if any(n.fqn is None for n, _ in users):  # type: ignore[attr-defined]
+        if any(n.fqn is None for n, _ in users):
             continue
-        bound = {id(b) for n, _ in users
-                 for b in matching_keys(n.fqn, model, n.kind == "composable_node")}  # type: ignore[attr-defined]
-        if not bound:
-            yield _whole_file(path, model, users, explain_no_match)
-        elif all(n.fqn is not None for n in readers[path]):  # type: ignore[attr-defined]
-            yield from _stray_keys(path, model, users, readers[path], explain_no_match)
+        keys = {id(n): matching_keys(n.fqn, model, n.kind == "composable_node") for n, _ in users}
+        if not any(keys.values()):
+            yield _whole_file(path, model, users)
+        elif all(n.fqn is not None for n in readers[path]):
+            yield from _stray_keys(path, model, users, keys, readers[path])
 
 
-def _whole_file(path: str, model: object, users: list[tuple[object, object]], explain_no_match: object
-                ) -> Diagnostic:
+def _whole_file(path: str, model: Any, users: list[tuple[Any, Any]]) -> Diagnostic:
     """No key of the file matches any node that loads it."""
-    block = model.blocks[0]  # type: ignore[attr-defined]
+    from physai_lint.params.match import explain_no_match
+
+    block = model.blocks[0]
     node, src = users[0]
-    fqns = ", ".join(sorted({f'"{n.fqn}"' for n, _ in users}))  # type: ignore[attr-defined]
-    explain = explain_no_match(block.key, node.fqn)  # type: ignore[attr-defined,operator]
+    fqns = ", ".join(sorted({f'"{n.fqn}"' for n, _ in users}))
     return Diagnostic(
         "P103", block.key_span,
-        f'no node key of "{_rel(path)}" matches the node(s) that load it ({fqns}): {explain}; '
-        "the whole file is silently ignored",
-        help=f'key the file by the node\'s full name, e.g. "{node.fqn}:", or use a wildcard such as '  # type: ignore[attr-defined]
-             f'"/**/{node.name}:"',  # type: ignore[attr-defined]
-        related=(Related(src.span, "loaded here"),),  # type: ignore[attr-defined]
+        f'no node key of "{_rel(path)}" matches the node(s) that load it ({fqns}): '
+        f"{explain_no_match(block.key, node.fqn)}; the whole file is silently ignored",
+        help=f'key the file by the node\'s full name, e.g. "{node.fqn}:", or use a wildcard such as '
+             f'"/**/{node.name}:"',
+        related=(Related(src.span, "loaded here"),),
         key=f"{_rel(path)}:{block.key}")
 
 
-def _stray_keys(path: str, model: object, users: list[tuple[object, object]], readers: list[object],
-                explain_no_match: object) -> Iterator[Diagnostic]:
+def _stray_keys(path: str, model: Any, users: list[tuple[Any, Any]], keys: dict[int, list[Any]],
+                readers: list[Any]) -> Iterator[Diagnostic]:
     """Keys meant for a node that loads the file but gets none of its own parameters from it: the
     key names it with a typo, or without (or with another) namespace. A key for a node of another
-    name is left alone: the file may be shared with nodes that launch files not checked here start."""
+    name is left alone: the file may be shared with nodes that launch files not checked here start.
+    ``keys``: the blocks that match each loading node (by ``id``)."""
     from physai_lint.closematch import close_matches
     from physai_lint.params.effective import matching_keys
+    from physai_lint.params.match import explain_no_match
 
     def own(key: str) -> str:
         return key.rstrip("/").rsplit("/", 1)[-1]
 
     matched = {id(b) for n in readers
-               for b in matching_keys(n.fqn, model, n.kind == "composable_node")}  # type: ignore[attr-defined]
+               for b in keys.get(id(n)) or matching_keys(n.fqn, model, n.kind == "composable_node")}
     # nodes that load the file and get no key of their own from it (wildcard keys aside)
-    unserved: dict[str, tuple[object, object]] = {}
+    unserved: dict[str, tuple[Any, Any]] = {}
     for node, src in users:
-        own_keys = [b for b in matching_keys(node.fqn, model, node.kind == "composable_node")  # type: ignore[attr-defined]
-                    if "*" not in own(b.key)]
-        if not own_keys and node.name:  # type: ignore[attr-defined]
-            unserved.setdefault(node.name, (node, src))  # type: ignore[attr-defined]
+        if node.name and not any("*" not in own(b.key) for b in keys[id(node)]):
+            unserved.setdefault(node.name, (node, src))
     if not unserved:
         return
     names = tuple(sorted(unserved))
-    for block in model.blocks:  # type: ignore[attr-defined]
+    for block in model.blocks:
         name = own(block.key)
         if id(block) in matched or "*" in name or not name:
             continue
@@ -127,14 +126,13 @@ def _stray_keys(path: str, model: object, users: list[tuple[object, object]], re
         if hit is None:
             continue
         node, src = unserved[hit]
-        explain = explain_no_match(block.key, node.fqn)  # type: ignore[attr-defined,operator]
         yield Diagnostic(
             "P103", block.key_span,
             f'node key "{block.key}" of "{_rel(path)}" matches none of the nodes that load the file: '
-            f"{explain}; the parameters under it are silently ignored",
-            help=f'key it by the node\'s full name, e.g. "{node.fqn.lstrip("/")}:", or use a wildcard such as '  # type: ignore[attr-defined]
-                 f'"/**/{node.name}:"',  # type: ignore[attr-defined]
-            related=(Related(src.span, f"{node.fqn} loads it here"),),  # type: ignore[attr-defined]
+            f"{explain_no_match(block.key, node.fqn)}; the parameters under it are silently ignored",
+            help=f'key it by the node\'s full name, e.g. "{node.fqn.lstrip("/")}:", or use a wildcard such as '
+                 f'"/**/{node.name}:"',
+            related=(Related(src.span, f"{node.fqn} loads it here"),),
             key=f"{_rel(path)}:{block.key}")
 
 

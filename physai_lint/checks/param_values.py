@@ -65,8 +65,7 @@ def type_mismatch(ctx: CheckContext) -> Iterator[Diagnostic]:
             fix = f" (write {ep.value}.0)"
         elif decl.type == "double_array" and got == "integer_array":
             fix = " (write every item with a decimal point, e.g. 1.0)"
-        elif decl.type == "bool" and got == "string" and ep.value.strip().lower() in ("true", "false"):
-            word = ep.value.strip().lower()
+        elif decl.type == "bool" and got == "string" and (word := ep.value.strip().lower()) in ("true", "false"):
             fix = f" (write {word.title() if ep.origin.file.endswith('.py') else word} without quotes)"
         where = f" ({_source(decl.source)})" if decl.source else ""
         yield Diagnostic(

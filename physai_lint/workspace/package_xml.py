@@ -46,9 +46,48 @@ def parse_manifest(text: str, filename: str, distro: str) -> ManifestInfo:
 def _evaluate_condition(condition: str | None, context: dict[str, str]) -> bool:
     if condition is None:
         return True
+    value = simple_condition(condition, context)
+    if value is not None:
+        return value
     from catkin_pkg.condition import evaluate_condition  # type: ignore[import-untyped]
 
     return bool(evaluate_condition(condition, context))
+
+
+# A REP 149 condition with no quotes and no parentheses: comparisons of ``$VARIABLE``s and bare
+# words joined by ``and``/``or`` (``$ROS_VERSION == 2``, ``$ROS_DISTRO != humble and ...``), the
+# only forms real manifests use. Anything else goes to catkin_pkg's pyparsing grammar.
+_TERM = r"(\$[A-Za-z0-9_]+|[A-Za-z0-9_-]+)"
+_COMPARISON = _TERM + r"\s*(==|!=|>=|>|<=|<)\s*" + _TERM
+_SIMPLE_RX = re.compile(r"\s*" + _COMPARISON + r"(?:\s+(?:and|or)\s+" + _COMPARISON + r")*\s*", re.ASCII)
+_PART_RX = re.compile(_COMPARISON + r"|(and|or)", re.ASCII)
+_COMPARE = {"==": str.__eq__, "!=": str.__ne__, ">=": str.__ge__, ">": str.__gt__, "<=": str.__le__,
+            "<": str.__lt__}
+
+
+def simple_condition(condition: str, context: dict[str, str]) -> bool | None:
+    """What ``catkin_pkg.condition.evaluate_condition`` returns for a simple condition, without
+    importing it (it imports pyparsing: ~65 ms, the largest import of a run whose workspace has
+    one conditional dependency); None when the condition is not of the simple form.
+
+    catkin_pkg's semantics: a ``$NAME`` is ``str(context.get(NAME, ""))``, a bare word itself,
+    every comparison is between strings, ``and`` binds tighter than ``or``."""
+    if _SIMPLE_RX.fullmatch(condition) is None:
+        return None
+
+    def term(token: str) -> str:
+        return str(context.get(token[1:], "")) if token.startswith("$") else token
+
+    any_true = False
+    all_true = True  # of the current ``and`` run
+    for m in _PART_RX.finditer(condition):
+        left, op, right, joiner = m.groups()
+        if joiner == "or":
+            any_true = any_true or all_true
+            all_true = True
+        elif joiner is None:
+            all_true = all_true and _COMPARE[op](term(left), term(right))
+    return any_true or all_true
 
 
 def _catkin_parser() -> Any:

@@ -304,10 +304,9 @@ def _suppress(findings: list[Finding], project: Project, catalog: dict[str, Any]
 
 
 def _rel(path: str, cwd: str) -> str:
-    try:
-        return os.path.relpath(path, cwd).replace(os.sep, "/")
-    except ValueError:
-        return path
+    from physai_lint.report import rel
+
+    return rel(path, cwd)
 
 
 def _manifest_of_targets(path: str, targets: set[str]) -> bool:

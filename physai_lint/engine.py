@@ -251,7 +251,7 @@ def to_findings(diags: list[Diagnostic], catalog: dict[str, Any], severity: dict
 def run_check(opts: CheckOptions, cwd: str | None = None) -> Report:
     """The whole ``check`` pipeline."""
     from physai_lint import baseline as bl
-    from physai_lint import suppress
+    from physai_lint import gcpolicy, suppress
     from physai_lint.catalog import load_catalog
     from physai_lint.progress import Progress
     from physai_lint.selection import Selector
@@ -262,6 +262,7 @@ def run_check(opts: CheckOptions, cwd: str | None = None) -> Report:
     progress = Progress.start(opts.progress)
     try:
         project = build_project(opts, cwd, progress)
+        gcpolicy.keep_to_exit(project)  # not freed object by object before the report
         diags = project.diagnostics + run_checks(project, opts, progress)
     finally:
         progress.stop()

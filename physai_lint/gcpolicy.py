@@ -51,6 +51,20 @@ def for_run() -> Iterator[None]:
                 gc.disable()
 
 
+_kept: list[object] = []
+
+
+def keep_to_exit(obj: object) -> None:
+    """Hold ``obj`` until the process ends, when it ends with ``os._exit`` right after the run.
+
+    Dropping the last reference to a run's project frees its whole object graph one object at a
+    time, in this process, before the report is written: 0.1 s on a public 1,180-file workspace,
+    serial whatever ``--jobs`` says. A process that is about to end gives its memory back at once.
+    """
+    if _state["ending"]:
+        _kept.append(obj)
+
+
 def parsing_done() -> None:
     """Called once every file is parsed: the collector is off for the rest of a command-line run."""
     if _state["active"]:

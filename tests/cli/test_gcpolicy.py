@@ -52,3 +52,20 @@ def test_a_process_about_to_end_is_left_as_the_run_left_it(monkeypatch: pytest.M
     finally:
         gc.set_threshold(*before)
         gc.enable()
+
+
+def test_only_a_process_about_to_end_keeps_the_project(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(gcpolicy, "_kept", [])
+    args = ["check", str(EXAMPLE / "src"), "--workspace", str(EXAMPLE), "--no-cache", "-q",
+            "--interfaces", str(EXAMPLE / "interfaces.yaml")]
+    assert cli._run(args) == 0
+    assert gcpolicy._kept == []  # a library caller's memory is freed as usual
+    monkeypatch.setitem(gcpolicy._state, "ending", True)
+    before = gc.get_threshold()
+    try:
+        assert cli._run(args) == 0
+    finally:
+        gc.set_threshold(*before)
+        gc.enable()
+    # the project is not freed object by object before the report; os._exit gives it back at once
+    assert [type(p).__name__ for p in gcpolicy._kept] == ["Project"]

@@ -1,5 +1,6 @@
 """Python launch API misuse found in the file's syntax: L003 parameters-not-a-list,
-L004 substitution-concatenation, L005 undefined-name, L006 missing-generate-launch-description."""
+L004 substitution-concatenation, L005 undefined-name, L006 missing-generate-launch-description,
+L008 wrong-argument-type."""
 from __future__ import annotations
 
 from typing import Iterator
@@ -85,3 +86,35 @@ def concatenation(ctx: CheckContext) -> Iterator[Diagnostic]:
                 help="build the value as a list of parts ([LaunchConfiguration('x'), '.yaml']) or with "
                      "PathJoinSubstitution([...])",
                 key=f"{fact.how}:{fact.detail}")
+
+
+_TEXT_HINT = {"bool": "a string such as 'true' or 'false'", "int": "a string such as '{v}'",
+              "float": "a string such as '{v}'"}
+
+
+@rule("L008", "wrong-argument-type")
+def wrong_argument_type(ctx: CheckContext) -> Iterator[Diagnostic]:
+    for path in sorted(ctx.launch_files):
+        facts = ctx.launch_files[path].python
+        if facts is None:
+            continue
+        for f in facts.wrong_types:
+            if f.kind == "text":
+                lower = f.value.lower() if f.type == "bool" else f.value
+                message = (f"{f.call} is given the {f.type} {f.value}, where launch accepts only a string or "
+                           f"substitutions; it raises \"TypeError: '{f.type}' object is not iterable\"")
+                help_ = f"write it as {_TEXT_HINT[f.type].format(v=lower)}" if f.type in _TEXT_HINT else \
+                    "give a string or a substitution"
+            elif f.kind == "pairs":
+                message = (f"{f.call} is given a dict ({f.value}): launch iterates it as (name, value) pairs "
+                           "and gets only its keys, so the include fails with \"ValueError: too many values "
+                           "to unpack (expected 2)\" (a two-letter key silently sets another argument)")
+                help_ = "pass launch_arguments={...}.items(), or a list of (name, value) tuples"
+            else:
+                what = f"a dict ({f.value}), whose keys launch_ros takes as the rules" if f.type == "dict" \
+                    else f"the rule {f.value} as a {f.type}"
+                message = (f"{f.call} is given {what}; launch_ros accepts only (from, to) tuples and raises "
+                           f"\"TypeError: Expected 'remap_rule' to be one of [<class 'tuple'>]\"")
+                help_ = ("pass a list of (from, to) tuples, e.g. remappings=[('/in', '/out')] or {...}.items()"
+                         if f.type == "dict" else "write the rule as a tuple: ('from', 'to')")
+            yield Diagnostic("L008", f.span, message, help=help_, key=f"{f.call}:{f.value}")

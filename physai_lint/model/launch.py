@@ -319,6 +319,22 @@ class NameFact:
 
 
 @dataclass(frozen=True, slots=True)
+class TypeFact:
+    """A value of a Python type that launch rejects where the launch file gives it
+    (``wrong-argument-type``). ``kind``: "text", a bool or number where launch wants a string or
+    substitutions; "pairs", a dict where launch iterates (name, value) pairs (``launch_arguments``);
+    "remap", a remap rule that is not a tuple (a list, or a dict's key). ``call`` names the
+    argument as written (``DeclareLaunchArgument(default_value=...)``), ``value`` is the Python
+    value's repr (shortened) and ``type`` its type's name."""
+
+    kind: Literal["text", "pairs", "remap"]
+    call: str
+    value: str
+    type: str
+    span: Span
+
+
+@dataclass(frozen=True, slots=True)
 class ConcatFact:
     """A substitution joined at description time: ``'a' + LaunchConfiguration('x')``,
     ``os.path.join(FindPackageShare('p'), 'x')``, f-string of a substitution (``how``)."""
@@ -336,6 +352,7 @@ class PythonFacts:
     has_generate_launch_description: bool = True
     # Defines generate_test_description(): a launch_testing file, run by `launch_test`, not `ros2 launch`.
     is_launch_test: bool = False
+    wrong_types: tuple[TypeFact, ...] = ()
 
 
 @dataclass(frozen=True, slots=True)

@@ -31,6 +31,35 @@ _ENV_OPS = {"SetEnvironmentVariable": "set", "UnsetEnvironmentVariable": "unset"
             "AppendEnvironmentVariable": "append", "ResetEnvironment": "reset"}
 
 
+# Arguments that launch turns into substitutions (``normalize_to_list_of_substitutions``), per
+# action: (position, keyword). A bool or a number there is neither a str nor a Substitution nor an
+# iterable of them, so building or running the action raises TypeError ("'bool' object is not
+# iterable"). ``_TEXT_ITEMS``: lists whose every item is normalized the same way.
+_NODE_TEXT = ((-1, "package"), (-1, "executable"), (-1, "name"), (-1, "namespace"), (-1, "exec_name"))
+_TEXT_ARGS: dict[str, tuple[tuple[int, str], ...]] = {
+    "DeclareLaunchArgument": ((-1, "default_value"),),
+    "SetLaunchConfiguration": ((0, "name"), (1, "value")),
+    "SetEnvironmentVariable": ((0, "name"), (1, "value")),
+    "AppendEnvironmentVariable": ((0, "name"), (1, "value")),
+    "UnsetEnvironmentVariable": ((0, "name"),),
+    "LogInfo": ((-1, "msg"),),
+    "PushRosNamespace": ((0, "namespace"),),
+    "PushROSNamespace": ((0, "namespace"),),
+    "SetRemap": ((0, "src"), (1, "dst")),
+    "ExecuteProcess": ((-1, "name"), (-1, "cwd")),
+    "Node": _NODE_TEXT, "LifecycleNode": _NODE_TEXT, "ComposableNodeContainer": _NODE_TEXT,
+}
+_TEXT_ITEMS: dict[str, tuple[str, ...]] = {
+    "ExecuteProcess": ("cmd",),
+    "Node": ("arguments", "ros_arguments"), "LifecycleNode": ("arguments", "ros_arguments"),
+    "ComposableNodeContainer": ("arguments", "ros_arguments"),
+}
+
+
+def _not_text(v: Any) -> bool:
+    return type(v) in (bool, int, float)
+
+
 class ActionBuilder:
     def __init__(self, ev: Evaluator) -> None:
         self.ev = ev
@@ -94,6 +123,7 @@ class ActionBuilder:
     def action(self, o: LObj) -> L.Action:
         n = api.short(o.qual)
         i, s = self.id_of(o), o.span
+        self._check_text(o, n)
         cond = to_condition(o.kwargs.get("condition"), o.arg_span(-1, "condition"))
         if n == "DeclareLaunchArgument":
             name = o.arg(0, "name")
@@ -158,6 +188,27 @@ class ActionBuilder:
             return L.ResetLaunchConfigurations(i, s, cond, keep)
         return L.OpaqueAction(i, s, cond, f"{n} is not modelled")
 
+    def _check_text(self, o: LObj, n: str) -> None:
+        """Record the bool and number values launch cannot turn into substitutions."""
+        for pos, name in _TEXT_ARGS.get(n, ()):
+            v = o.arg(pos, name)
+            if _not_text(v):
+                self.ev.wrong_type("text", f"{n}({name}=...)", v, o.arg_span(pos, name))
+        for name in _TEXT_ITEMS.get(n, ()):
+            items = o.arg(-1, name)
+            if isinstance(items, (list, tuple)):
+                span = o.arg_span(-1, name)
+                for k, v in enumerate(items):
+                    if _not_text(v):
+                        self.ev.wrong_type("text", f"{n}({name}=[...])", v, span_at(items, k, span))
+        if n == "GroupAction":
+            lcs = o.arg(-1, "launch_configurations")
+            if isinstance(lcs, dict):
+                for key, v in lcs.items():
+                    if _not_text(v):
+                        self.ev.wrong_type("text", f"GroupAction(launch_configurations={{{key!r}: ...}})", v,
+                                           o.arg_span(-1, "launch_configurations"))
+
     def _v(self, o: LObj, pos: int, name: str) -> Value:
         return opt_value(o, pos, name) or ()
 
@@ -182,6 +233,8 @@ class ActionBuilder:
         la_span = o.arg_span(1, "launch_arguments")
         args: tuple[L.IncludeArgument, ...] | None = ()
         if isinstance(la, dict):
+            if la:  # launch iterates it as (name, value) pairs: it gets the keys
+                self.ev.wrong_type("pairs", "IncludeLaunchDescription(launch_arguments=...)", la, la_span)
             la = [(k, v) for k, v in la.items()]
         if isinstance(la, (list, tuple)):
             out = []
@@ -189,6 +242,9 @@ class ActionBuilder:
                 if not isinstance(pair, (list, tuple)) or len(pair) != 2:
                     out = None
                     break
+                if _not_text(pair[1]):  # SetLaunchConfiguration(name, value) when the include runs
+                    self.ev.wrong_type("text", f"IncludeLaunchDescription(launch_arguments=[({pair[0]!r}, ...)])",
+                                       pair[1], span_at(la, k, la_span))
                 name = pair[0] if isinstance(pair[0], str) else literal_of(to_value(pair[0], la_span))
                 if name is None:
                     out = None
@@ -199,11 +255,17 @@ class ActionBuilder:
             args = None
         return L.Include(i, s, cond, path, args, kind)  # type: ignore[arg-type]
 
-    def _remaps(self, v: Any, span: Span) -> tuple[L.Remapping, ...]:
+    def _remaps(self, v: Any, span: Span, call: str) -> tuple[L.Remapping, ...]:
         if v is None:
             return ()
         if isinstance(v, dict):
+            if v:  # launch_ros iterates it: each rule is a key, a str, not a tuple
+                self.ev.wrong_type("remap", f"{call}(remappings=...)", v, span)
             v = list(v.items())
+        elif isinstance(v, (list, tuple)):
+            for k, rule in enumerate(v):
+                if isinstance(rule, list) and len(rule) == 2:  # normalize_remap_rule wants a tuple
+                    self.ev.wrong_type("remap", f"{call}(remappings=[...])", rule, span_at(v, k, span))
         if not isinstance(v, (list, tuple)):
             reason = v.reason if isinstance(v, Opaque) else "remappings cannot be evaluated statically"
             return (L.Remapping((Unknown(reason, span),), (Unknown(reason, span),), span),)
@@ -225,7 +287,7 @@ class ActionBuilder:
             opt_value(o, -1, "package"), opt_value(o, -1, "executable"), opt_value(o, -1, "name"),
             opt_value(o, -1, "namespace"),
             to_params(kw.get("parameters"), o.arg_span(-1, "parameters")),
-            self._remaps(kw.get("remappings"), o.arg_span(-1, "remappings")),
+            self._remaps(kw.get("remappings"), o.arg_span(-1, "remappings"), api.short(o.qual)),
             self._list_values(kw.get("arguments"), o.arg_span(-1, "arguments")),
             self._list_values(kw.get("ros_arguments"), o.arg_span(-1, "ros_arguments")),
             self._composables(kw.get("composable_node_descriptions"), s) if kind == "container" else (),
@@ -247,7 +309,8 @@ class ActionBuilder:
             out.append(L.ComposableNode(
                 opt_value(c, -1, "package"), opt_value(c, -1, "plugin"), opt_value(c, -1, "name"),
                 opt_value(c, -1, "namespace"), to_params(c.kwargs.get("parameters"), c.arg_span(-1, "parameters")),
-                self._remaps(c.kwargs.get("remappings"), c.arg_span(-1, "remappings")), tuple(extra), c.span,
+                self._remaps(c.kwargs.get("remappings"), c.arg_span(-1, "remappings"), "ComposableNode"), tuple(extra),
+                c.span,
                 self._branch_condition(c, to_condition(c.kwargs.get("condition"), c.span)), self.id_of(c)))
         return tuple(out)
 

@@ -6,7 +6,7 @@ import ast
 import os
 from typing import Any
 
-from physai_lint.model.launch import ConcatFact
+from physai_lint.model.launch import ConcatFact, TypeFact
 from physai_lint.model.span import Span
 from physai_lint.model.values import BoolOp, Compare, IfElse, PathJoin, Value
 
@@ -25,6 +25,7 @@ class Recorder:
         self.concats: dict[tuple[str, Span], ConcatFact] = {}
         self.kw_kinds: dict[tuple[int, str], str] = {}
         self.read_files: list[str] = []
+        self.wrong_types: dict[tuple[str, Span], TypeFact] = {}
 
     def register(self, obj: Any, spans: Any) -> Any:
         self.containers[id(obj)] = (obj, spans)
@@ -38,6 +39,29 @@ class Recorder:
         key = (how, span)
         if key not in self.concats:
             self.concats[key] = ConcatFact(how, span, detail)  # type: ignore[arg-type]
+
+    def wrong_type(self, kind: str, call: str, value: Any, span: Span) -> None:
+        key = (call, span)
+        if key not in self.wrong_types:
+            text = _shown(value)
+            if len(text) > 60:
+                text = text[:57] + "..."
+            self.wrong_types[key] = TypeFact(kind, call, text, type(value).__name__, span)  # type: ignore[arg-type]
+
+
+def _shown(value: Any) -> str:
+    """A value as the launch file wrote it, for messages: strings, numbers and bools as Python
+    literals, anything else as ``...``; a dict by its keys."""
+    if isinstance(value, dict):
+        return "{" + ", ".join(f"{_shown(k)}: ..." for k in value) + "}"
+    if isinstance(value, (list, tuple)):
+        inner = ", ".join(_shown(x) for x in value)
+        return f"[{inner}]" if isinstance(value, list) else f"({inner}{',' if len(value) == 1 else ''})"
+    if isinstance(value, str):
+        return repr(str(value))
+    if type(value) in (bool, int, float):
+        return repr(value)
+    return "..."
 
 
 def is_subst(v: Any) -> bool:

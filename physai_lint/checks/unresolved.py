@@ -91,7 +91,22 @@ def unknown_executable(ctx: CheckContext) -> Iterator[Diagnostic]:
         if (span, node.executable) in seen:
             continue
         seen.add((span, node.executable))
-        close = did_you_mean(node.executable, known)
+        in_bin = ctx.packages.executables_in_bin(node.package) \
+            if node.kind != "composable_node" and hasattr(ctx.packages, "executables_in_bin") else frozenset()
+        close = did_you_mean(node.executable, known | in_bin)
+        if node.executable in in_bin or set(close) & in_bin:
+            script = node.executable if node.executable in in_bin else sorted(set(close) & in_bin)[0]
+            lib = f"$base/lib/{node.package}"
+            yield Diagnostic(
+                "U102", span,
+                f'package "{node.package}" installs its console script "{script}" to bin/, not lib/{node.package}'
+                f' (no setup.cfg sends its scripts there), and launch looks for "{node.executable}" only in '
+                f'lib/{node.package}: the node fails to start with a SubstitutionFailure',
+                help=f'add a setup.cfg next to setup.py with "[develop] script_dir={lib}" and '
+                     f'"[install] install_scripts={lib}"' + (f', and use "{script}"' if script != node.executable
+                                                             else ""),
+                key=f"{node.package}/{node.executable}")
+            continue
         hint = (" (did you mean " + " or ".join(f'"{c}"' for c in close) + "?)") if close else ""
         listing = ", ".join(f'"{k}"' for k in sorted(known)[:8]) or "none"
         yield Diagnostic(

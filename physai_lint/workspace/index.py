@@ -196,6 +196,12 @@ class PackageIndex:
             return self._installed_exes[name]
         return None
 
+    def executables_in_bin(self, name: str) -> frozenset[str]:
+        """Console scripts of a workspace ament_python package that go to ``bin/`` (no setup.cfg
+        sends them to ``lib/<package>``, where ``ros2 run`` and launch look)."""
+        pkg = self.packages.get(name)
+        return pkg.executables_in_bin if pkg is not None else frozenset()
+
     def plugins(self, name: str) -> frozenset[str] | None:
         pkg = self.packages.get(name)
         if pkg is not None:

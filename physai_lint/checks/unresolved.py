@@ -95,7 +95,7 @@ def unknown_executable(ctx: CheckContext) -> Iterator[Diagnostic]:
             if node.kind != "composable_node" and hasattr(ctx.packages, "executables_in_bin") else frozenset()
         close = did_you_mean(node.executable, known | in_bin)
         if node.executable in in_bin or set(close) & in_bin:
-            script = node.executable if node.executable in in_bin else sorted(set(close) & in_bin)[0]
+            script = node.executable if node.executable in in_bin else min(set(close) & in_bin)
             lib = f"$base/lib/{node.package}"
             yield Diagnostic(
                 "U102", span,

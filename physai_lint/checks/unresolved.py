@@ -91,20 +91,23 @@ def unknown_executable(ctx: CheckContext) -> Iterator[Diagnostic]:
         if (span, node.executable) in seen:
             continue
         seen.add((span, node.executable))
-        in_bin = ctx.packages.executables_in_bin(node.package) \
-            if node.kind != "composable_node" and hasattr(ctx.packages, "executables_in_bin") else frozenset()
+        in_bin, elsewhere = ctx.packages.executables_in_bin(node.package) \
+            if node.kind != "composable_node" and hasattr(ctx.packages, "executables_in_bin") else (frozenset(), None)
         close = did_you_mean(node.executable, known | in_bin)
         if node.executable in in_bin or set(close) & in_bin:
             script = node.executable if node.executable in in_bin else min(set(close) & in_bin)
             lib = f"$base/lib/{node.package}"
+            where_to = f"to {elsewhere} (setup.cfg's script_dir)" if elsewhere else \
+                "to bin/ (no setup.cfg sends its scripts elsewhere)"
+            fix = (f'set script_dir and install_scripts in setup.cfg to {lib}' if elsewhere else
+                   f'add a setup.cfg next to setup.py with "[develop] script_dir={lib}" and '
+                   f'"[install] install_scripts={lib}"')
             yield Diagnostic(
                 "U102", span,
-                f'package "{node.package}" installs its console script "{script}" to bin/, not lib/{node.package}'
-                f' (no setup.cfg sends its scripts there), and launch looks for "{node.executable}" only in '
-                f'lib/{node.package}: the node fails to start with a SubstitutionFailure',
-                help=f'add a setup.cfg next to setup.py with "[develop] script_dir={lib}" and '
-                     f'"[install] install_scripts={lib}"' + (f', and use "{script}"' if script != node.executable
-                                                             else ""),
+                f'package "{node.package}" installs its console script "{script}" {where_to}, not to '
+                f'lib/{node.package}, where launch looks for "{node.executable}": the node fails to start '
+                "with a SubstitutionFailure",
+                help=fix + (f', and use "{script}"' if script != node.executable else ""),
                 key=f"{node.package}/{node.executable}")
             continue
         hint = (" (did you mean " + " or ".join(f'"{c}"' for c in close) + "?)") if close else ""

@@ -34,7 +34,8 @@ class BuildInfo:
     statically (then "not installed" verdicts would be guesses and ``locate`` says "unknown")."""
 
     executables: set[str] = field(default_factory=set)  # installed to lib/<pkg>
-    executables_in_bin: set[str] = field(default_factory=set)  # console scripts without setup.cfg
+    executables_in_bin: set[str] = field(default_factory=set)  # console scripts not sent to lib/<pkg>
+    scripts_dir: str | None = None  # where setup.cfg sends them instead (as written), else bin/
     plugins: set[str] = field(default_factory=set)
     rules: list[InstallRule] = field(default_factory=list)
     # executable or plugin -> parameter YAML files (absolute paths)

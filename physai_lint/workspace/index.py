@@ -58,6 +58,7 @@ class WorkspacePackage:
     valid: bool = True  # False when catkin_pkg rejected package.xml
     dirs: frozenset[str] = field(default_factory=frozenset)
     sources: dict[str, tuple[str, ...]] = field(default_factory=dict)  # executable -> sources
+    scripts_dir: str | None = None  # setup.cfg's script_dir when it is not lib/<name>
 
 
 def _norm(path: str) -> str:
@@ -196,11 +197,12 @@ class PackageIndex:
             return self._installed_exes[name]
         return None
 
-    def executables_in_bin(self, name: str) -> frozenset[str]:
-        """Console scripts of a workspace ament_python package that go to ``bin/`` (no setup.cfg
-        sends them to ``lib/<package>``, where ``ros2 run`` and launch look)."""
+    def executables_in_bin(self, name: str) -> tuple[frozenset[str], str | None]:
+        """Console scripts of a workspace ament_python package that do not go to ``lib/<package>``,
+        where ``ros2 run`` and launch look, and where they go instead: the directory its setup.cfg
+        names, as written, or None for ``bin/``."""
         pkg = self.packages.get(name)
-        return pkg.executables_in_bin if pkg is not None else frozenset()
+        return (pkg.executables_in_bin, pkg.scripts_dir) if pkg is not None else (frozenset(), None)
 
     def plugins(self, name: str) -> frozenset[str] | None:
         pkg = self.packages.get(name)
@@ -766,6 +768,7 @@ def _read_package(index: PackageIndex, pkg_dir: str) -> WorkspacePackage | None:
         exec_depends=man.exec_depends,
         executables=frozenset(info.executables),
         executables_in_bin=frozenset(info.executables_in_bin),
+        scripts_dir=info.scripts_dir,
         plugins=frozenset(info.plugins),
         install_rules=tuple(info.rules),
         parameter_yamls={k: tuple(v) for k, v in sorted(info.parameter_yamls.items())},

@@ -185,23 +185,21 @@ def _find_setup_call(tree: ast.Module) -> ast.Call | None:
     return None
 
 
-def _script_dir_is_lib(pkg_dir: str, pkg_name: str) -> bool | None:
-    """``setup.cfg`` sends console scripts to ``lib/<pkg>``? None when there is no setup.cfg."""
+def _script_dirs(pkg_dir: str) -> list[str]:
+    """Where ``setup.cfg`` sends console scripts (``script_dir``, ``install_scripts``), as written;
+    empty when there is no setup.cfg or it says nothing (they go to ``bin/``)."""
     path = pkg_dir + "/setup.cfg"
     if not os.path.isfile(path):
-        return None
+        return []
     cp = configparser.RawConfigParser()
     try:
         cp.read(path, encoding="utf-8")
     except (configparser.Error, OSError, UnicodeDecodeError):
-        return False
-    for section, key in (("develop", "script_dir"), ("develop", "script-dir"),
-                         ("install", "install_scripts"), ("install", "install-scripts")):
-        if cp.has_option(section, key):
-            val = cp.get(section, key).strip().replace("\\", "/").rstrip("/")
-            if val.endswith("lib/" + pkg_name):
-                return True
-    return False
+        return []
+    return [cp.get(section, key).strip().replace("\\", "/").rstrip("/")
+            for section, key in (("develop", "script_dir"), ("develop", "script-dir"),
+                                 ("install", "install_scripts"), ("install", "install-scripts"))
+            if cp.has_option(section, key)]
 
 
 def read_setup_py(pkg_dir: str, pkg_name: str, files: frozenset[str], text: str | None) -> BuildInfo:
@@ -329,7 +327,10 @@ def read_setup_py(pkg_dir: str, pkg_name: str, files: frozenset[str], text: str 
         elif kw.arg == "packages" and isinstance(val, (list, tuple)):
             info.python_packages.update(p for p in val if isinstance(p, str))
     # console scripts
-    to_lib = _script_dir_is_lib(pkg_dir, pkg_name)
+    dirs = _script_dirs(pkg_dir)
+    to_lib = any(d.endswith("lib/" + pkg_name) for d in dirs)
+    if not to_lib and dirs:
+        info.scripts_dir = dirs[0]
     script_targets: dict[str, str] = {}
     for exe, target in scripts:
         (info.executables if to_lib else info.executables_in_bin).add(exe)

@@ -53,10 +53,19 @@ def test_console_scripts_in_bin_are_explained(tmp_path: Path, setup_cfg: str | N
     found = _u102(tmp_path, setup_cfg)
     assert [line for line, _, _ in found] == [7, 8]
     (_, msg_a, help_a), (_, msg_b, help_b) = found
-    assert 'installs its console script "driver" to bin/, not lib/pybot' in msg_a
-    assert 'launch looks for "driver" only in lib/pybot' in msg_a
+    assert msg_a.startswith('package "pybot" installs its console script "driver" to bin/ (no setup.cfg sends '
+                            'its scripts elsewhere), not to lib/pybot, where launch looks for "driver"')
     assert "script_dir=$base/lib/pybot" in help_a and "install_scripts=$base/lib/pybot" in help_a
-    assert 'launch looks for "driver.py"' in msg_b and help_b.endswith(', and use "driver"')
+    assert 'where launch looks for "driver.py"' in msg_b and help_b.endswith(', and use "driver"')
+
+
+def test_console_scripts_sent_to_another_package_dir(tmp_path: Path) -> None:
+    """A package renamed without its setup.cfg (seen in a public workspace)."""
+    found = _u102(tmp_path, SETUP_CFG.replace("lib/pybot", "lib/old_name"))
+    _, msg, help_ = found[0]
+    assert msg.startswith('package "pybot" installs its console script "driver" to $base/lib/old_name '
+                          "(setup.cfg's script_dir), not to lib/pybot")
+    assert help_ == "set script_dir and install_scripts in setup.cfg to $base/lib/pybot"
 
 
 def test_console_scripts_in_lib_are_executables(tmp_path: Path) -> None:

@@ -6,6 +6,7 @@ from collections.abc import Iterable, Iterator
 
 from physai_lint.checks.base import CheckContext
 from physai_lint.closematch import close_matches
+from physai_lint.model.launch import PythonFacts
 from physai_lint.resolve.model import LaunchResult, NodeInstance
 
 
@@ -46,3 +47,11 @@ def relpath(path: str | None) -> str:
         return os.path.relpath(path).replace(os.sep, "/")
     except ValueError:
         return path
+
+
+def python_facts(ctx: CheckContext) -> Iterator[tuple[str, PythonFacts]]:
+    """(path, PythonFacts) of the parsed Python launch files, in path order."""
+    for path in sorted(ctx.launch_files):
+        facts = ctx.launch_files[path].python
+        if facts is not None:
+            yield path, facts

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from physai_lint.checks._util import suggestion
+from physai_lint.checks._util import python_facts, suggestion
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic
 from physai_lint.model.launch import CallFact
@@ -127,10 +127,7 @@ def _signature_problems(call: CallFact, cls: str) -> Iterator[Diagnostic]:
 def unknown_keyword_argument(ctx: CheckContext) -> Iterator[Diagnostic]:
     tables = _tables(ctx.distro)
     jazzy_tables = _tables("jazzy") if ctx.distro == "humble" else tables
-    for path in sorted(ctx.launch_files):
-        facts = ctx.launch_files[path].python
-        if facts is None:
-            continue
+    for path, facts in python_facts(ctx):
         for call in facts.calls:
             allowed = tables.get(call.qualname)
             if allowed is None:

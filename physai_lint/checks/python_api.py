@@ -5,8 +5,10 @@ from __future__ import annotations
 
 from typing import Iterator
 
+from physai_lint.checks._util import python_facts
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic
+from physai_lint.model.launch import TypeFact
 
 NODE_CLASSES = ("launch_ros.actions.Node", "launch_ros.actions.LifecycleNode",
                 "launch_ros.actions.ComposableNodeContainer", "launch_ros.descriptions.ComposableNode",
@@ -15,10 +17,7 @@ NODE_CLASSES = ("launch_ros.actions.Node", "launch_ros.actions.LifecycleNode",
 
 @rule("L003", "parameters-not-a-list")
 def parameters_not_a_list(ctx: CheckContext) -> Iterator[Diagnostic]:
-    for path in sorted(ctx.launch_files):
-        facts = ctx.launch_files[path].python
-        if facts is None:
-            continue
+    for path, facts in python_facts(ctx):
         for call in facts.calls:
             kinds = dict(call.value_kinds)
             kind = kinds.get("parameters")
@@ -37,10 +36,7 @@ def parameters_not_a_list(ctx: CheckContext) -> Iterator[Diagnostic]:
 
 @rule("L005", "undefined-name")
 def undefined_name(ctx: CheckContext) -> Iterator[Diagnostic]:
-    for path in sorted(ctx.launch_files):
-        facts = ctx.launch_files[path].python
-        if facts is None:
-            continue
+    for path, facts in python_facts(ctx):
         for fact in facts.undefined_names:
             yield Diagnostic(
                 "L005", fact.span,
@@ -53,9 +49,8 @@ def undefined_name(ctx: CheckContext) -> Iterator[Diagnostic]:
 def missing_gld(ctx: CheckContext) -> Iterator[Diagnostic]:
     from physai_lint.model.span import Span
 
-    for path in sorted(ctx.launch_files):
-        facts = ctx.launch_files[path].python
-        if facts is None or facts.has_generate_launch_description or facts.is_launch_test:
+    for path, facts in python_facts(ctx):
+        if facts.has_generate_launch_description or facts.is_launch_test:
             continue
         yield Diagnostic(
             "L006", Span.point(path, 1),
@@ -74,10 +69,7 @@ def concatenation(ctx: CheckContext) -> Iterator[Diagnostic]:
         "percent": "formatted with % at description time",
         "str": "converted with str() at description time",
     }
-    for path in sorted(ctx.launch_files):
-        facts = ctx.launch_files[path].python
-        if facts is None:
-            continue
+    for path, facts in python_facts(ctx):
         for fact in facts.concatenations:
             yield Diagnostic(
                 "L004", fact.span,
@@ -88,33 +80,31 @@ def concatenation(ctx: CheckContext) -> Iterator[Diagnostic]:
                 key=f"{fact.how}:{fact.detail}")
 
 
-_TEXT_HINT = {"bool": "a string such as 'true' or 'false'", "int": "a string such as '{v}'",
-              "float": "a string such as '{v}'"}
-
-
 @rule("L008", "wrong-argument-type")
 def wrong_argument_type(ctx: CheckContext) -> Iterator[Diagnostic]:
-    for path in sorted(ctx.launch_files):
-        facts = ctx.launch_files[path].python
-        if facts is None:
-            continue
+    for _path, facts in python_facts(ctx):
         for f in facts.wrong_types:
-            if f.kind == "text":
-                lower = f.value.lower() if f.type == "bool" else f.value
-                message = (f"{f.call} is given the {f.type} {f.value}, where launch accepts only a string or "
-                           f"substitutions; it raises \"TypeError: '{f.type}' object is not iterable\"")
-                help_ = f"write it as {_TEXT_HINT[f.type].format(v=lower)}" if f.type in _TEXT_HINT else \
-                    "give a string or a substitution"
-            elif f.kind == "pairs":
-                message = (f"{f.call} is given a dict ({f.value}): launch iterates it as (name, value) pairs "
-                           "and gets only its keys, so the include fails with \"ValueError: too many values "
-                           "to unpack (expected 2)\" (a two-letter key silently sets another argument)")
-                help_ = "pass launch_arguments={...}.items(), or a list of (name, value) tuples"
-            else:
-                what = f"a dict ({f.value}), whose keys launch_ros takes as the rules" if f.type == "dict" \
-                    else f"the rule {f.value} as a {f.type}"
-                message = (f"{f.call} is given {what}; launch_ros accepts only (from, to) tuples and raises "
-                           f"\"TypeError: Expected 'remap_rule' to be one of [<class 'tuple'>]\"")
-                help_ = ("pass a list of (from, to) tuples, e.g. remappings=[('/in', '/out')] or {...}.items()"
-                         if f.type == "dict" else "write the rule as a tuple: ('from', 'to')")
+            message, help_ = _wrong_type_text(f)
             yield Diagnostic("L008", f.span, message, help=help_, key=f"{f.call}:{f.value}")
+
+
+def _wrong_type_text(f: TypeFact) -> tuple[str, str]:
+    """The message and help of an L008 finding."""
+    if f.kind == "text":  # a bool, int or float (the frontend records nothing else here)
+        example = "'true' or 'false'" if f.type == "bool" else f"'{f.value}'"
+        message = (f"{f.call} is given the {f.type} {f.value}, where launch accepts only a string or "
+                   f"substitutions; it raises \"TypeError: '{f.type}' object is not iterable\"")
+        return message, f"write it as a string such as {example}"
+    if f.kind == "pairs":
+        message = (f"{f.call} is given a dict ({f.value}): launch iterates it as (name, value) pairs "
+                   "and gets only its keys, so the include fails with \"ValueError: too many values "
+                   "to unpack (expected 2)\" (a two-letter key silently sets another argument)")
+        return message, "pass launch_arguments={...}.items(), or a list of (name, value) tuples"
+    if f.type == "dict":
+        what = f"a dict ({f.value}), whose keys launch_ros takes as the rules"
+        help_ = "pass a list of (from, to) tuples, e.g. remappings=[('/in', '/out')] or {...}.items()"
+    else:
+        what, help_ = f"the rule {f.value} as a {f.type}", "write the rule as a tuple: ('from', 'to')"
+    message = (f"{f.call} is given {what}; launch_ros accepts only (from, to) tuples and raises "
+               f"\"TypeError: Expected 'remap_rule' to be one of [<class 'tuple'>]\"")
+    return message, help_

@@ -254,6 +254,7 @@ def run_check(opts: CheckOptions, cwd: str | None = None) -> Report:
     from physai_lint import gcpolicy, suppress
     from physai_lint.catalog import load_catalog
     from physai_lint.progress import Progress
+    from physai_lint.report import rel
     from physai_lint.selection import Selector
 
     started = time.perf_counter()
@@ -276,10 +277,10 @@ def run_check(opts: CheckOptions, cwd: str | None = None) -> Report:
     findings = [f for f in to_findings(unique, catalog, opts.severity)
                 if f.span.file in project.targets or f.code.startswith("X")
                 and (f.span.file in project.store.texts or _manifest_of_targets(f.span.file, project.targets))]
-    findings = [f for f in findings if selector.enabled_for(f.code, _rel(f.span.file, project.cwd))]
+    findings = [f for f in findings if selector.enabled_for(f.code, rel(f.span.file, project.cwd))]
     findings, extra = _suppress(findings, project, catalog, selector, suppress)
     findings += [f for f in to_findings(extra, catalog, opts.severity)
-                 if selector.enabled_for(f.code, _rel(f.span.file, project.cwd))]
+                 if selector.enabled_for(f.code, rel(f.span.file, project.cwd))]
     suppressed = 0
     if opts.baseline:
         findings, suppressed = bl.load(opts.baseline).filter(findings, project.cwd)
@@ -302,12 +303,6 @@ def _suppress(findings: list[Finding], project: Project, catalog: dict[str, Any]
         if fmt is not None:
             directives[path] = suppress.parse_directives(path, text, fmt)
     return suppress.apply(findings, directives, catalog, enabled=selector.enabled)  # type: ignore[no-any-return]
-
-
-def _rel(path: str, cwd: str) -> str:
-    from physai_lint.report import rel
-
-    return rel(path, cwd)
 
 
 def _manifest_of_targets(path: str, targets: set[str]) -> bool:

@@ -91,8 +91,8 @@ def unknown_executable(ctx: CheckContext) -> Iterator[Diagnostic]:
         if (span, node.executable) in seen:
             continue
         seen.add((span, node.executable))
-        in_bin, elsewhere = ctx.packages.executables_in_bin(node.package) \
-            if node.kind != "composable_node" and hasattr(ctx.packages, "executables_in_bin") else (frozenset(), None)
+        in_bin, elsewhere = ctx.packages.scripts_outside_lib(node.package) \
+            if node.kind != "composable_node" and hasattr(ctx.packages, "scripts_outside_lib") else (frozenset(), None)
         close = did_you_mean(node.executable, known | in_bin)
         if node.executable in in_bin or set(close) & in_bin:
             script = node.executable if node.executable in in_bin else min(set(close) & in_bin)

@@ -197,7 +197,7 @@ class PackageIndex:
             return self._installed_exes[name]
         return None
 
-    def executables_in_bin(self, name: str) -> tuple[frozenset[str], str | None]:
+    def scripts_outside_lib(self, name: str) -> tuple[frozenset[str], str | None]:
         """Console scripts of a workspace ament_python package that do not go to ``lib/<package>``,
         where ``ros2 run`` and launch look, and where they go instead: the directory its setup.cfg
         names, as written, or None for ``bin/``."""

@@ -46,7 +46,8 @@ def unused_argument(ctx: CheckContext) -> Iterator[Diagnostic]:
         opaque_files = {s.file for s, _ in launch.opaque}
         read_names = {r.name for r in launch.config_reads}
         for arg in launch.declared_args:
-            if arg.name in read_names or arg.file in opaque_files or arg.span in seen:
+            if not arg.name or arg.name in read_names or arg.file in opaque_files \
+                    or arg.span in seen:  # no name: L009 (XML/YAML) reports the declaration
                 continue
             if launch.opaque and any(s.file == arg.file for s, _ in launch.opaque):
                 continue

@@ -44,7 +44,17 @@ from physai_lint.model.launch import (
     Timer,
 )
 from physai_lint.model.span import Span
-from physai_lint.model.values import PList, PLit, PSubst, PValue, PyScalar, Text, Value, literal_of
+from physai_lint.model.values import (
+    PList,
+    PLit,
+    PSubst,
+    PValue,
+    PyScalar,
+    Text,
+    Unknown,
+    Value,
+    literal_of,
+)
 
 Scalar = PyScalar | None
 
@@ -73,11 +83,13 @@ class Element:
     attrs: dict[str, Attr] = field(default_factory=dict)
     children: list[Element] = field(default_factory=list)
     parent: str | None = None
+    single: bool = False  # YAML: one mapping where launch reads a list of mappings
 
 
 class _Builder:
-    def __init__(self, path: str) -> None:
+    def __init__(self, path: str, fmt: str = "xml") -> None:
         self.path = path
+        self.fmt = fmt
         self.diags: list[Diagnostic] = []
         self.facts: list[tuple[str, str | None, tuple[tuple[str, Span], ...], Span]] = []
 
@@ -94,8 +106,10 @@ class _Builder:
         return None if attr is None else self.value_of(attr)
 
     def req(self, el: Element, name: str) -> Value:
+        """A required attribute; when it is missing (L009 reports it) the value is unknown, so
+        no later rule reports on a made-up empty string."""
         v = self.val(el, name)
-        return v if v is not None else (Text("", el.span),)
+        return v if v is not None else (Unknown(f'missing "{name}"', el.span),)
 
     def lit(self, el: Element, name: str) -> str | None:
         attr = el.attrs.get(name)
@@ -107,6 +121,23 @@ class _Builder:
             return default
         low = raw.strip().lower()
         return True if low in ("true", "1") else False if low in ("false", "0") else default
+
+    def truth(self, el: Element, name: str, default: bool) -> bool:
+        """A plain-bool attribute (group ``scoped``/``forwarding``) as the action sees it: XML text
+        goes through ``coerce_to_type(bool, can_be_str=True)`` and YAML is taken as is, so text
+        that is not a boolean (a substitution, YAML ``"false"``) stays a non-empty string: true.
+        L010 reports those."""
+        attr = el.attrs.get(name)
+        if attr is None:
+            return default
+        if not attr.is_str:
+            return bool(attr.typed) if isinstance(attr.typed, (bool, int, float)) else default
+        if self.fmt == "yaml":
+            return bool(attr.text)
+        from physai_lint.params.typing import pyyaml_type
+
+        value = pyyaml_type(attr.text)
+        return bool(value) if isinstance(value, (bool, int, float, str)) else default
 
     def condition(self, el: Element) -> Condition | None:
         given = [n for n in ("if", "unless") if n in el.attrs]
@@ -169,8 +200,8 @@ class _Builder:
 
     def group(self, el: Element) -> Action:
         return Group(self.ident(el), el.span, self.condition(el), self.actions(el.children),
-                     scoped=self.flag(el, "scoped", True),
-                     forwarding=self.flag(el, "forwarding", True),
+                     scoped=self.truth(el, "scoped", True),
+                     forwarding=self.truth(el, "forwarding", True),
                      launch_configurations=self.keep(el))
 
     def reset(self, el: Element) -> Action:
@@ -346,8 +377,11 @@ _ACTIONS: dict[str, Callable[[_Builder, Element], Action]] = {
 def build_launch_file(path: str, fmt: Literal["xml", "yaml"], root: Element,
                       ) -> tuple[LaunchFile, list[Diagnostic]]:
     """The IR of a ``<launch>`` element tree, plus substitution/condition diagnostics."""
-    b = _Builder(path)
+    from physai_lint.frontends.attributes import attribute_problems
+
+    b = _Builder(path, fmt)
     b.record(root)
     actions = b.actions(root.children)
     facts = MarkupFacts(tuple(b.facts))
-    return LaunchFile(path, fmt, actions, markup=facts), b.diags
+    diags = b.diags + attribute_problems(root, fmt)
+    return LaunchFile(path, fmt, actions, markup=facts), diags

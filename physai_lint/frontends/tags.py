@@ -85,9 +85,24 @@ ACCEPTED: dict[str, TagSpec] = {
 }
 # include's <arg> children are (name, value), not DeclareLaunchArgument attributes
 _INCLUDE_ARG = _spec({"name", "value"}, action=False)
+# Accepted attributes by schema name ("include/arg" for an include's <arg>), for L009/L010.
+ACCEPTED_BY_SCHEMA: dict[str, frozenset[str]] = {
+    **{tag: spec.attributes for tag, spec in ACCEPTED.items()},
+    "include/arg": _INCLUDE_ARG.attributes}
 
+# Unknown attributes that stand for an accepted one: the Python keyword or the ROS 1 spelling.
+_PY_KEYWORDS = {"executable": "exec", "package": "pkg", "node_executable": "exec",
+                "node_name": "name", "node_namespace": "namespace", "arguments": "args"}
+ALIASES: dict[tuple[str, str], str] = {
+    **{(t, k): v for t in ("node", "node_container") for k, v in _PY_KEYWORDS.items()},
+    ("node", "type"): "exec", ("node", "ns"): "namespace", ("node_container", "ns"): "namespace",
+    ("composable_node", "package"): "pkg", ("arg", "default_value"): "default",
+    ("include", "filename"): "file", ("executable", "command"): "cmd",
+}
 # Attributes accepted by the parser but rejected right after (SEMANTICS §5, e19) or ROS 1 habits.
 _HINTS: dict[tuple[str, str], str] = {
+    **{k: f'use "{v}" ("{k[1]}" is the keyword of the Python action)'
+       for k, v in ALIASES.items() if k[1] not in ("type", "ns")},
     ("node", "node-name"): 'use "name"; "node-name" is accepted by the parser but fails later',
     ("node", "ns"): 'ROS 2 uses "namespace" (ROS 1 "ns")',
     ("node", "type"): 'ROS 2 uses "exec" (ROS 1 "type")',
@@ -97,7 +112,7 @@ _HINTS: dict[tuple[str, str], str] = {
 }
 
 
-def _suggest(word: str, options: frozenset[str]) -> str | None:
+def suggest(word: str, options: frozenset[str]) -> str | None:
     close = difflib.get_close_matches(word, sorted(options), n=1, cutoff=0.6)
     return close[0] if close else None
 
@@ -109,7 +124,7 @@ def unknown_markup(facts: MarkupFacts) -> list[tuple[Span, str, str | None]]:
         spec = _INCLUDE_ARG if tag == "arg" and parent == "include" else ACCEPTED.get(tag)
         if spec is None:
             allowed = ACCEPTED[parent].children if parent in ACCEPTED else ACTION_TAGS
-            out.append((span, f'unknown tag "{tag}"', _suggest(tag, allowed or ACTION_TAGS)))
+            out.append((span, f'unknown tag "{tag}"', suggest(tag, allowed or ACTION_TAGS)))
             continue
         if parent is not None and parent in ACCEPTED and tag not in ACCEPTED[parent].children \
                 and not (tag == "arg" and parent == "include"):
@@ -121,7 +136,7 @@ def unknown_markup(facts: MarkupFacts) -> list[tuple[Span, str, str | None]]:
                 continue
             if name.endswith("-sep") and name[:-4] in spec.attributes:
                 continue
-            hint = _HINTS.get((tag, name)) or _suggest(name, spec.attributes)
+            hint = _HINTS.get((tag, name)) or suggest(name, spec.attributes)
             out.append((name_span, f'unknown attribute "{name}" on "{tag}"', hint))
     return out
 

@@ -76,7 +76,8 @@ class _Reader:
         if isinstance(body, yaml.MappingNode):
             for k, v in self.pairs(body):
                 self.member(el, k, v)
-        elif isinstance(body, yaml.SequenceNode) and tag == "launch":
+        elif isinstance(body, yaml.SequenceNode):
+            # launch_yaml Entity.children: a list body *is* the children ("- group: [- node: ...]")
             el.children.extend(self.entities(body, tag))
         else:
             self.visit(body)
@@ -103,7 +104,9 @@ class _Reader:
             self.visit(value)
             el.children.extend(self.element(name, item, item, el.tag) for item in value.value)
         elif isinstance(value, yaml.MappingNode):
-            el.children.append(self.element(name, value, value, el.tag))
+            child = self.element(name, value, value, el.tag)
+            child.single = True
+            el.children.append(child)
         else:
             el.attrs[name] = self.attr(name, key, value)
 

@@ -1,0 +1,192 @@
+"""Required attributes (L009) and attribute types (L010) of XML/YAML launch files.
+
+Each case states what the real launch frontend does with the markup (checked against
+launch/launch_ros rolling and humble sources): the file fails to parse, or a value is misread.
+"""
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import pytest
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2]))  # tests run without an install
+
+from physai_lint.frontends.tags import unknown_markup  # noqa: E402
+from physai_lint.frontends.xml_launch import parse_xml_launch  # noqa: E402
+from physai_lint.frontends.yaml_launch import parse_yaml_launch  # noqa: E402
+from physai_lint.model import launch as ir  # noqa: E402
+
+XML = "/ws/src/p/launch/a.launch.xml"
+YAML = "/ws/src/p/launch/a.launch.yaml"
+
+
+def found(text: str) -> list[tuple[str, int, str]]:
+    """(code, line, key) of the L002/L009/L010 diagnostics of a launch file."""
+    if text.lstrip().startswith("<"):
+        result = parse_xml_launch(XML, text)
+    else:
+        result = parse_yaml_launch(YAML, text)
+    return [(d.code, d.span.line, d.key) for d in result.diagnostics
+            if d.code in ("L002", "L009", "L010")]
+
+
+def ir_of(text: str) -> ir.LaunchFile:
+    result = parse_yaml_launch(YAML, text) if not text.startswith("<") else \
+        parse_xml_launch(XML, text)
+    assert result.launch is not None
+    return result.launch
+
+
+# ---- L009: AttributeError / TypeError while the file is parsed --------------------------------
+@pytest.mark.parametrize("text, key", [
+    ('<launch>\n<node pkg="demo_nodes_cpp" name="t"/>\n</launch>', "node:exec"),
+    ("<launch>\n<include/>\n</launch>", "include:file"),
+    ('<launch>\n<arg default="1"/>\n</launch>', "arg:name"),
+    ('<launch>\n<include file="a.launch.xml"><arg name="x"/></include>\n</launch>',
+     "include/arg:value"),
+    ('<launch>\n<node pkg="p" exec="e"><remap from="a"/></node>\n</launch>', "remap:to"),
+    (('<launch>\n<node_container pkg="rclcpp_components" exec="component_container" name="c"/>'
+      "\n</launch>"), "node_container:namespace"),
+    (('<launch>\n<node_container pkg="p" exec="e" name="c" namespace="">'
+      '<composable_node pkg="p" plugin="P"/></node_container>\n</launch>'), "composable_node:name"),
+    ('<launch>\n<load_composable_node target="c"/>\n</launch>', "load:composable_node"),
+    ('<launch>\n<node pkg="p" exec="e"><param value="1"/></node>\n</launch>', "param:name|from"),
+    ('<launch>\n<node pkg="p" exec="e"><param name="x"/></node>\n</launch>', "param:value"),
+    (('<launch>\n<node pkg="p" exec="e"><param name="x"><param value="1"/></param></node>\n'
+      "</launch>"), "param:name"),
+    ("<launch>\n<timer><log message='a'/></timer>\n</launch>", "timer:period"),
+    ("launch:\n- node: {pkg: p, name: t}\n", "node:exec"),
+    ("launch:\n- group:\n    scoped: false\n", "group:children"),
+    ("launch:\n- set_parameter: {name: use_sim_time}\n", "set_parameter:value"),
+])
+def test_missing_attribute(text: str, key: str) -> None:
+    assert [k for c, _, k in found(text) if c == "L009"] == [key]
+
+
+def test_a_misspelt_attribute_is_reported_once_by_l002() -> None:
+    text = '<launch>\n<node pkg="p" executable="talker"/>\n</launch>'
+    assert found(text) == []
+    markup = ir_of(text).markup
+    assert markup is not None
+    assert [(m, h) for _, m, h in unknown_markup(markup)] == [
+        ('unknown attribute "executable" on "node"',
+         'use "exec" ("executable" is the keyword of the Python action)')]
+
+
+@pytest.mark.parametrize("text", [
+    ('<launch>\n<node pkg="p" exec="e" name="n"><param name="a"><param name="b" value="1"/>'
+     "</param><param from=\"/x.yaml\" allow_substs=\"true\"/></node>\n</launch>"),
+    ('<launch>\n<node_container pkg="p" exec="e" name="c" namespace="/">'
+     '<composable_node pkg="p" plugin="P" name="n"/></node_container>\n</launch>'),
+    "launch:\n- group:\n  - node: {pkg: p, exec: e}\n",
+    "launch:\n- timer:\n    period: 1.0\n    children:\n    - log: {message: a}\n",
+    ("<launch>\n<group><push-ros-namespace namespace='a'/></group>\n<shutdown/>\n<reset/>\n"
+     "</launch>"),
+])
+def test_complete_markup_is_quiet(text: str) -> None:
+    assert found(text) == []
+
+
+def test_conflicting_param_attributes_are_l002() -> None:
+    text = ('<launch>\n<node pkg="p" exec="e">\n<param name="a" from="/x.yaml"/>\n'
+            '<param name="b" allow_substs="true" value="1"/>\n'
+            '<param name="c" value="1"><param name="d" value="2"/></param>\n</node>\n</launch>')
+    assert found(text) == [("L002", 3, "param:name+from"), ("L002", 4, "param:allow_substs"),
+                           ("L002", 5, "param:value+param")]
+
+
+def test_a_missing_value_is_unknown_not_empty() -> None:
+    """No later rule sees a made-up "" (an <include/> used to be read as the directory ".")."""
+    launch = ir_of("<launch>\n<include/>\n</launch>")
+    include = launch.actions[0]
+    assert isinstance(include, ir.Include)
+    assert type(include.path[0]).__name__ == "Unknown"
+
+
+# ---- L010: YAML does not convert ----------------------------------------------------------------
+@pytest.mark.parametrize("text, key", [
+    ("launch:\n- arg: {name: rate, default: 10}\n", "arg:default:int"),
+    ("launch:\n- arg: {name: sim, default: false}\n", "arg:default:bool"),
+    ("launch:\n- arg: {name: sim, default: }\n", "arg:default:NoneType"),
+    ("launch:\n- let: {name: x, value: 1.5}\n", "let:value:float"),
+    ("launch:\n- include:\n    file: a.launch.xml\n    arg:\n    - {name: a, value: true}\n",
+     "arg:value:bool"),
+    ("launch:\n- node: {pkg: p, exec: e, respawn: true}\n", "node:respawn:bool"),
+    ("launch:\n- node: {pkg: p, exec: e, respawn_delay: 2}\n", "node:respawn_delay:int"),
+    ('launch:\n- node: {pkg: p, exec: e, respawn_delay: "2.0"}\n', "node:respawn_delay:str"),
+    ("launch:\n- node: {pkg: p, exec: e, respawn_max_retries: 2.5}\n",
+     "node:respawn_max_retries:float"),
+    ("launch:\n- timer:\n    period: 2\n    children:\n    - log: {message: a}\n",
+     "timer:period:int"),
+    ("launch:\n- executable: {cmd: [ls, -l]}\n", "executable:cmd:list"),
+    ("launch:\n- group:\n    if: true\n    children:\n    - log: {message: a}\n",
+     "group:if:bool"),
+    ('launch:\n- group:\n    scoped: "false"\n    children:\n    - log: {message: a}\n',
+     "group:scoped:truthy"),
+    ("launch:\n- executable: {cmd: ls, shell: 1}\n", "executable:shell:int"),
+    ("launch:\n- node:\n    pkg: p\n    exec: e\n    remap: {from: a, to: b}\n", "node:remap:map"),
+])
+def test_yaml_types(text: str, key: str) -> None:
+    assert [k for c, _, k in found(text) if c == "L010"] == [key]
+
+
+def test_yaml_values_launch_accepts() -> None:
+    text = ('launch:\n- arg: {name: rate, default: "10"}\n'
+            "- node:\n    pkg: p\n    exec: e\n    respawn: 'true'\n    respawn_delay: 1.0\n"
+            "    respawn_max_retries: 3\n    emulate_tty: true\n    param:\n"
+            "    - {name: a, value: 10}\n    - {name: b, value: [1, 2]}\n"
+            "    - {name: c, value: true}\n    - {from: /x.yaml, allow_substs: true}\n"
+            "- timer:\n    period: $(var rate)\n    cancel_on_shutdown: 'true'\n    children:\n"
+            "    - log: {message: a}\n"
+            "- append_env: {name: P, value: /x, prepend: true}\n")
+    assert found(text) == []
+
+
+# ---- L010: XML keeps text that does not convert ----------------------------------------------
+@pytest.mark.parametrize("attrs, key", [
+    ('respawn_delay="$(var d)"', "node:respawn_delay:str"),
+    ('respawn_delay="two"', "node:respawn_delay:str"),
+    ('respawn_delay="-1.0"', "node:respawn_delay:negative"),
+    ('sigterm_timeout="$(var t)"', "node:sigterm_timeout:str"),
+    ('respawn_max_retries="three"', "node:respawn_max_retries:str"),
+    ('shell="$(var s)"', "node:shell:truthy"),
+    ('emulate_tty="maybe"', "node:emulate_tty:truthy"),
+    ('shell="2"', "node:shell:other"),
+])
+def test_xml_types(attrs: str, key: str) -> None:
+    text = f'<launch>\n<node pkg="p" exec="e" {attrs}/>\n</launch>'
+    assert [k for c, _, k in found(text) if c == "L010"] == [key]
+
+
+@pytest.mark.parametrize("attrs", [
+    'respawn_delay="2"', 'respawn_delay="0.5"', 'sigkill_timeout="5"', 'respawn_max_retries="3"',
+    'shell="true"', 'shell="False"', 'emulate_tty="yes"', 'shell="0"', 'respawn="$(var r)"',
+])
+def test_xml_values_launch_accepts(attrs: str) -> None:
+    assert found(f'<launch>\n<node pkg="p" exec="e" {attrs}/>\n</launch>') == []
+
+
+def test_xml_timer_period_may_be_a_substitution() -> None:
+    assert found('<launch>\n<timer period="$(var d)"><log message="a"/></timer>\n</launch>') == []
+
+
+# ---- how the IR reads plain-bool attributes ------------------------------------------------------
+@pytest.mark.parametrize("text, scoped, forwarding", [
+    ('<launch><group scoped="false" forwarding="no"/></launch>', False, False),
+    ('<launch><group scoped="$(var x)"/></launch>', True, True),
+    ("launch:\n- group: {scoped: false, forwarding: false, children: []}\n", False, False),
+    ('launch:\n- group: {scoped: "false", forwarding: "", children: []}\n', True, False),
+])
+def test_group_flags_as_the_action_sees_them(text: str, scoped: bool, forwarding: bool) -> None:
+    group = ir_of(text).actions[0]
+    assert isinstance(group, ir.Group)
+    assert (group.scoped, group.forwarding) == (scoped, forwarding)
+
+
+def test_a_yaml_group_written_as_a_list_keeps_its_actions() -> None:
+    launch = ir_of("launch:\n- group:\n  - push-ros-namespace: {namespace: r}\n"
+                   "  - node: {pkg: p, exec: e, name: n}\n")
+    group = launch.actions[0]
+    assert isinstance(group, ir.Group)
+    assert [type(a).__name__ for a in group.actions] == ["PushNamespace", "NodeAction"]

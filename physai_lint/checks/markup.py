@@ -18,7 +18,7 @@ def unknown_attribute(ctx: CheckContext) -> Iterator[Diagnostic]:
         lf = ctx.launch_files[path]
         if lf.format not in ("xml", "yaml") or lf.markup is None:
             continue
-        for span, message, hint in unknown_markup(lf.markup):
+        for span, message, hint in unknown_markup(lf.markup, lf.format):
             if hint and " " not in hint:
                 help_ = f'did you mean "{hint}"?'
             else:

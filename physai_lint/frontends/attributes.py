@@ -74,11 +74,8 @@ def attribute_problems(root: Element, fmt: str) -> list[Diagnostic]:
         accepted = ACCEPTED_BY_SCHEMA.get(_schema(el))
         if accepted is None:
             continue
+        out.extend(_yaml_types(el, accepted) if fmt == "yaml" else _xml_types(el))
         out.extend(_missing(el, fmt, accepted))
-        if fmt == "yaml":
-            out.extend(_yaml_types(el, accepted))
-        else:
-            out.extend(_xml_types(el))
     return out
 
 
@@ -102,17 +99,19 @@ def _missing(el: Element, fmt: str, accepted: frozenset[str]) -> Iterator[Diagno
             and "name" not in el.attrs:
         yield _diag("L009", el, '"param" has neither "name" nor "from"; launch fails with '
                     '"param Entity should have name or from attribute"',
-                    'add name="..." value="..." for one parameter, or from="..." for a file',
+                    "add name: and value: for one parameter, or from: for a file" if fmt == "yaml"
+                    else 'add name="..." value="..." for one parameter, or from="..." for a file',
                     "param:name|from")
     elif el.tag == "param" and el.parent == "param" and "name" not in el.attrs:
         yield _diag("L009", el, 'nested "param" has no "name"; launch fails with "Attribute '
-                    "'name' not found in Entity 'param'\"", 'add name="..."', "param:name")
+                    "'name' not found in Entity 'param'\"",
+                    "add name: ..." if fmt == "yaml" else 'add name="..."', "param:name")
     elif el.tag == "param" and "name" in el.attrs and "value" not in el.attrs \
-            and "from" not in el.attrs and "param" not in kids:
+            and "from" not in el.attrs and "param" not in kids and "value" not in kids:
         name = el.attrs["name"].text
         yield _diag("L009", el, f'parameter "{name}" has no "value" and no nested "param"; '
                     'launch fails with "either a value attribute or nested params are needed"',
-                    'add value="..."', "param:value")
+                    "add value: ..." if fmt == "yaml" else 'add value="..."', "param:value")
     if el.tag == "param":
         yield from _param_conflicts(el, kids)
     if el.tag == "load_composable_node" and "composable_node" not in kids:
@@ -124,7 +123,7 @@ def _missing(el: Element, fmt: str, accepted: frozenset[str]) -> Iterator[Diagno
         yield _diag("L009", el, f'"{el.tag}" has no "children"; launch fails with "Expected '
                     f'entity `{el.tag}` to have children entities."',
                     "put its actions in a children: list", f"{el.tag}:children")
-    missing = [n for n in need if n not in el.attrs]
+    missing = [n for n in need if n not in el.attrs and n not in kids]
     if not missing:
         return
     meant = _stands_for(el, accepted)
@@ -184,6 +183,8 @@ def _yaml_kind(attr: Attr) -> type:
 def _yaml_types(el: Element, accepted: frozenset[str]) -> Iterator[Diagnostic]:
     tag = el.tag
     for name, attr in el.attrs.items():
+        if (tag, name) == ("param", "value"):
+            yield from _yaml_param_list(el, attr)
         if name not in accepted or (tag, name) in _ANY or name == "children":
             continue
         kind = _yaml_kind(attr)
@@ -227,12 +228,52 @@ def _yaml_types(el: Element, accepted: frozenset[str]) -> Iterator[Diagnostic]:
                               if kind is not tuple else
                               f'write it as one string: {name}: "a b c"')
     for child in el.children:
-        if child.tag in _LIST_KEYS and child.single:
+        if child.tag in accepted and child.single:  # "value: {p: 1}": a mapping, not a scalar
+            want = "float" if child.tag in _FLOAT.get(tag, ()) else "scalar or list of scalars" \
+                if (tag, child.tag) in _ANY else "str"
+            yield Diagnostic(
+                "L010", child.span, f'key "{child.tag}" of "{tag}" is a mapping but launch reads '
+                f"a {want} here; it fails with TypeError \"Attribute '{child.tag}' of Entity "
+                f"'{tag}' expected to be of type ..., got '<class 'dict'>'\"",
+                "write nested parameters as a param: list of name/value entries"
+                if tag == "param" else f"give {child.tag} a single value",
+                key=f"{tag}:{child.tag}:dict")
+        elif child.tag in _LIST_KEYS and child.single:
             yield Diagnostic(
                 "L010", child.span, f'key "{child.tag}" of "{tag}" is a mapping; launch wants a '
                 f"list of mappings and fails with TypeError \"Attribute '{child.tag}' of Entity "
                 f"'{tag}' expected to be a list of dictionaries.\"",
                 'make it a list: put "- " before its first key', key=f"{tag}:{child.tag}:map")
+
+
+def _yaml_param_list(el: Element, attr: Attr) -> Iterator[Diagnostic]:
+    """A YAML list parameter value launch rejects (P106): ``get_attr`` (``is_instance_of_valid_type``
+    with strings allowed) wants scalars whose non-string items share the first one's type, and
+    ``parse_if_substitutions`` then wants one type among the values and plain texts."""
+    if not attr.items:
+        return
+    kinds = [_yaml_kind(item) for item in attr.items]
+    name = el.attrs["name"].text if "name" in el.attrs else "?"
+    shown = "[" + ", ".join(i.text if i.is_str or not i.items else "[...]"
+                            for i in attr.items) + "]"
+    first = next((k for k in kinds if k is not str), str)
+    bad = [k for k in kinds if k is not str and (k not in (bool, int, float) or
+                                                  not issubclass(k, first))]
+    if first not in (str, bool, int, float) or bad:
+        why = ("TypeError \"Attribute 'value' of Entity 'param' expected to be of type 'None', "
+               "got '<class 'list'>'\"")
+    elif len({k for k in kinds if k is not str} |
+             {str for i in attr.items if i.is_str and "$(" not in i.text}) > 1:
+        why = "ValueError \"The result is a non-uniform list\""
+    else:
+        return
+    what = "items of different types" if all(k in (str, bool, int, float) for k in kinds) \
+        else "items that are not scalars (a list or null)"
+    yield Diagnostic(
+        "P106", attr.value_span, f'parameter "{name}" value {shown} is a list with {what}; '
+        f"launch fails with {why}",
+        "make every item the same type (e.g. all floats: 1.0, 2.5; all strings in quotes)",
+        key=name)
 
 
 def _shown(attr: Attr, kind: type) -> str:

@@ -117,10 +117,14 @@ def suggest(word: str, options: frozenset[str]) -> str | None:
     return close[0] if close else None
 
 
-def unknown_markup(facts: MarkupFacts) -> list[tuple[Span, str, str | None]]:
-    """Unknown tags, attributes/keys and misplaced tags: (span, message, suggestion or help)."""
+def unknown_markup(facts: MarkupFacts, fmt: str = "xml") -> list[tuple[Span, str, str | None]]:
+    """Unknown tags, attributes/keys and misplaced tags: (span, message, suggestion or help).
+    In YAML a key of its parent's given a mapping (``value: {a: 1}``) is wrong-attribute-type's."""
     out: list[tuple[Span, str, str | None]] = []
     for tag, parent, attrs, span in facts.elements:
+        if fmt == "yaml" and parent is not None and parent in ACCEPTED_BY_SCHEMA \
+                and tag in ACCEPTED_BY_SCHEMA[parent]:
+            continue
         spec = _INCLUDE_ARG if tag == "arg" and parent == "include" else ACCEPTED.get(tag)
         if spec is None:
             allowed = ACCEPTED[parent].children if parent in ACCEPTED else ACTION_TAGS

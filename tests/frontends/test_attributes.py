@@ -190,3 +190,32 @@ def test_a_yaml_group_written_as_a_list_keeps_its_actions() -> None:
     group = launch.actions[0]
     assert isinstance(group, ir.Group)
     assert [type(a).__name__ for a in group.actions] == ["PushNamespace", "NodeAction"]
+
+
+# ---- P106: YAML list parameter values ----------------------------------------------------------
+@pytest.mark.parametrize("value, reported", [
+    ("[1, a]", True),  # parse_if_substitutions: {int, str} -> "The result is a non-uniform list"
+    ("[1, 2.5]", True),  # is_instance_of_valid_type: 2.5 is not an int -> TypeError
+    ("[1, true]", True),  # bool passes as an int in get_attr, then {int, bool}
+    ("[[1], [2]]", True),  # a list is not a scalar
+    ("[1, $(var x)]", False),  # a substitution adds no type
+    ('[a, "1"]', False),
+    ("[1.0, 2.5]", False),
+    ("[]", False),
+])
+def test_yaml_list_parameter_values(value: str, reported: bool) -> None:
+    text = f"launch:\n- node:\n    pkg: p\n    exec: e\n    param:\n    - name: g\n      value: {value}\n"
+    assert [c for c, _, _ in found_all(text)].count("P106") == (1 if reported else 0)
+
+
+def found_all(text: str) -> list[tuple[str, int, str]]:
+    result = parse_yaml_launch(YAML, text)
+    return [(d.code, d.span.line, d.key) for d in result.diagnostics]
+
+
+def test_yaml_mapping_for_a_parameter_value() -> None:
+    text = ("launch:\n- node:\n    pkg: p\n    exec: e\n    param:\n    - name: pid\n"
+            "      value: {p: 1, i: 2}\n")
+    assert found(text) == [("L010", 7, "param:value:dict")]
+    markup = ir_of(text).markup
+    assert markup is not None and unknown_markup(markup, "yaml") == []

@@ -46,14 +46,15 @@ def unused_argument(ctx: CheckContext) -> Iterator[Diagnostic]:
         opaque_files = {s.file for s, _ in launch.opaque}
         read_names = {r.name for r in launch.config_reads}
         for arg in launch.declared_args:
+            # one finding per declaration; a helper (add_launch_arg) declares many at one span
             if not arg.name or arg.name in read_names or arg.file in opaque_files \
-                    or arg.span in seen:  # no name: L009 (XML/YAML) reports the declaration
+                    or (arg.span, arg.name) in seen:  # no name: L009 (XML/YAML) reports it
                 continue
             if launch.opaque and any(s.file == arg.file for s, _ in launch.opaque):
                 continue
             if _read_anywhere(ctx, arg.file, arg.name):
                 continue
-            seen.add(arg.span)
+            seen.add((arg.span, arg.name))
             yield Diagnostic(
                 "L102", arg.span,
                 f'launch argument "{arg.name}" is declared but never read',

@@ -6,7 +6,7 @@ from collections.abc import Iterator
 from typing import Any
 
 from physai_lint.checks._params import effective
-from physai_lint.checks._util import did_you_mean
+from physai_lint.checks._util import did_you_mean, where
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic, Related
 from physai_lint.resolve.model import LaunchResult, NodeInstance, ResolvedParamDict
@@ -58,7 +58,7 @@ def not_launched(ctx: CheckContext) -> Iterator[Diagnostic]:
                 hint = ("; did you mean " + " or ".join(f'"{c}"' for c in close) + "?") if close else ""
                 yield Diagnostic(
                     "S201", span,
-                    f'lifecycle manager {mgr.fqn} manages "{name}" ({target}) but no such node is '
+                    f'lifecycle manager {where(mgr)} manages "{name}" ({target}) but no such node is '
                     f"launched{hint}; it waits for it and never brings the system up",
                     help="remove the name from node_names or launch the node with that name",
                     related=(Related(mgr.span, "the lifecycle manager"),), key=target)
@@ -77,7 +77,7 @@ def unmanaged(ctx: CheckContext) -> Iterator[Diagnostic]:
             if node.fqn not in managed:
                 yield Diagnostic(
                     "S202", node.spans.get("name", node.span),
-                    f"lifecycle node {node.fqn} is launched but no lifecycle manager names it; it "
+                    f"lifecycle node {where(node)} is launched but no lifecycle manager names it; it "
                     "stays unconfigured",
                     help=f'add "{node.name}" to a lifecycle manager\'s node_names', key=node.fqn)
 

@@ -6,7 +6,7 @@ import os
 from collections.abc import Iterator
 from typing import Any
 
-from physai_lint.checks._util import all_nodes
+from physai_lint.checks._util import all_nodes, where
 from physai_lint.checks._util import relpath as _rel
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic, Related
@@ -132,7 +132,7 @@ def _stray_keys(path: str, model: Any, users: list[tuple[Any, Any]], keys: dict[
             f"{explain_no_match(block.key, node.fqn)}; the parameters under it are silently ignored",
             help=f'key it by the node\'s full name, e.g. "{node.fqn.lstrip("/")}:", or use a wildcard such as '
                  f'"/**/{node.name}:"',
-            related=(Related(src.span, f"{node.fqn} loads it here"),),
+            related=(Related(src.span, f"{where(node)} loads it here"),),
             key=f"{_rel(path)}:{block.key}")
 
 

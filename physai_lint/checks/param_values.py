@@ -7,7 +7,7 @@ from typing import Any
 
 from physai_lint.checks._params import decl_source as _source
 from physai_lint.checks._params import effective, interface, nodes_with_params
-from physai_lint.checks._util import did_you_mean
+from physai_lint.checks._util import did_you_mean, where
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic, Related
 
@@ -149,7 +149,7 @@ def undeclared(ctx: CheckContext) -> Iterator[Diagnostic]:
             hint = ("; did you mean " + " or ".join(f'"{c}"' for c in close) + "?") if close else ""
             yield Diagnostic(
                 "P109", ep.origin,
-                f'{node.fqn} does not declare parameter "{name}"{hint}; the value is ignored',
+                f'{where(node)} does not declare parameter "{name}"{hint}; the value is ignored',
                 help="fix the parameter name, or remove it", key=f"{node.fqn}:{name}")
 
 
@@ -215,7 +215,7 @@ def use_sim_time(ctx: CheckContext) -> Iterator[Diagnostic]:
             seen.add((node.span, node.fqn))
             yield Diagnostic(
                 "P111", node.span,
-                f"{node.fqn} never gets use_sim_time, so it runs on wall-clock time (default false), "
+                f"{where(node)} never gets use_sim_time, so it runs on wall-clock time (default false), "
                 f"but {len(values[True])} other node(s) of this launch (e.g. {other.fqn or other.executable}) "
                 "have use_sim_time true",
                 help="give every node use_sim_time, e.g. one SetParameter(name='use_sim_time', "

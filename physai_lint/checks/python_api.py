@@ -95,6 +95,24 @@ def _wrong_type_text(f: TypeFact) -> tuple[str, str]:
         message = (f"{f.call} is given the {f.type} {f.value}, where launch accepts only a string or "
                    f"substitutions; it raises \"TypeError: '{f.type}' object is not iterable\"")
         return message, f"write it as a string such as {example}"
+    if f.kind == "plain-bool":
+        name = f.call.split("(", 1)[1].split("=", 1)[0]
+        what = "a substitution object" if f.type == "substitution" else "a non-empty string"
+        message = (f"{f.call} is given {f.value}, a {f.type}: launch uses it as a plain bool "
+                   f"without evaluating it, and {what} is true, so {name} is always on")
+        help_ = ("pass True or False; to choose at launch time, declare a launch argument named "
+                 "'emulate_tty' (launch reads that configuration for every process)"
+                 if name == "emulate_tty" else
+                 "pass True or False; to choose at launch time, use two actions with "
+                 "IfCondition / UnlessCondition")
+        return message, help_
+    if f.kind == "plain-number":
+        name = f.call.split("(", 1)[1].split("=", 1)[0]
+        message = (f"{f.call} is given {f.value}, a {f.type}: launch keeps it as is and compares it "
+                   "with a number when the process exits and is respawned, which raises "
+                   "TypeError ('>' or '<' not supported)")
+        example = "respawn_delay=2.0" if name == "respawn_delay" else "respawn_max_retries=3"
+        return message, f"pass a number, e.g. {example}; a launch argument cannot set it"
     if f.kind == "pairs":
         message = (f"{f.call} is given a dict ({f.value}): launch iterates it as (name, value) pairs "
                    "and gets only its keys, so the include fails with \"ValueError: too many values "

@@ -6,7 +6,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import Any
 
-from physai_lint.checks._util import all_nodes
+from physai_lint.checks._util import all_nodes, where
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.graph.system import Endpoint, SystemGraph, build_graph, remap_target, similar
 from physai_lint.model.findings import Diagnostic, Related
@@ -295,7 +295,7 @@ def type_mismatch(ctx: CheckContext) -> Iterator[Diagnostic]:
                 pnode = g.node(pub.node)
                 yield Diagnostic(
                     "T203", node.span,
-                    f'{node.fqn} subscribes to "{topic}" as "{e.type}" but {pnode.fqn} publishes "{pub.type}"',
+                    f'{where(node)} subscribes to "{topic}" as "{e.type}" but {where(pnode)} publishes "{pub.type}"',
                     help="make both ends use the same message type, or remap one of them",
                     related=(Related(pnode.span, f'publishes "{pub.type}" here'),), key=topic)
 
@@ -320,6 +320,6 @@ def duplicate_service(ctx: CheckContext) -> Iterator[Diagnostic]:
                 seen.add((node.span, e.resolved))
                 what = "service" if kind == "service" else "action"
                 yield Diagnostic("T204", node.span,
-                                 f'{node.fqn} and {prev.fqn} both serve {what} "{e.resolved}"',
+                                 f'{where(node)} and {where(prev)} both serve {what} "{e.resolved}"',
                                  help="only one server per name: rename or namespace one of them",
                                  related=(Related(prev.span, "the other server"),), key=e.resolved)

@@ -238,7 +238,15 @@ class _Builder:
     def executable(self, el: Element) -> Action:
         cmd = self.val(el, "cmd")
         return ExecuteProcess(self.ident(el), el.span, self.condition(el),
-                              split_cmdline(cmd) if cmd is not None else None, self.val(el, "name"))
+                              split_cmdline(cmd) if cmd is not None else None, self.val(el, "name"),
+                              self.other(el))
+
+    def other(self, el: Element) -> tuple[Value, ...]:
+        """The process attributes launch substitutes that no rule models, and ``<env>`` values."""
+        out = [v for v in (self.val(el, n) for n in _OTHER_ATTRS) if v is not None]
+        for env in self.kids(el, "env"):
+            out.extend(v for v in (self.val(env, "name"), self.val(env, "value")) if v is not None)
+        return tuple(out)
 
     def node(self, el: Element) -> Action:
         spans: list[tuple[str, Span]] = []
@@ -258,7 +266,7 @@ class _Builder:
             arguments=split_cmdline(args) if args is not None else (),
             ros_arguments=split_cmdline(ros_args) if ros_args is not None else (),
             composable_nodes=tuple(self.composable(c) for c in self.kids(el, "composable_node")),
-            field_spans=tuple(spans), exec_name=self.val(el, "exec_name"))
+            field_spans=tuple(spans), exec_name=self.val(el, "exec_name"), other=self.other(el))
 
     def load(self, el: Element) -> Action:
         return LoadComposableNodes(
@@ -355,6 +363,8 @@ def _sub_span(span: Span | None, a: int, b: int) -> Span | None:
     return Span(span.file, span.line, span.col + a, span.line, span.col + b)
 
 
+# ExecuteProcess.parse: read with parse_substitution (the numbers and bools are literals).
+_OTHER_ATTRS = ("output", "respawn", "launch-prefix", "cwd")
 _NODE_FIELDS = (("pkg", "package"), ("exec", "executable"), ("name", "name"),
                 ("namespace", "namespace"), ("exec_name", "exec_name"), ("args", "arguments"),
                 ("ros_args", "ros_arguments"))

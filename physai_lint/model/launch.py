@@ -196,6 +196,9 @@ class NodeAction(ActionBase):
     composable_nodes: tuple[ComposableNode, ...] = ()
     field_spans: tuple[tuple[str, Span], ...] = ()
     exec_name: Value | None = None
+    # Other values launch substitutes when the node runs (output, respawn, prefix, cwd,
+    # environment): no rule looks at them, but the launch configurations they read are read.
+    other: tuple[Value, ...] = ()
 
     def span_of(self, field_name: str) -> Span:
         for key, span in self.field_spans:
@@ -217,6 +220,7 @@ class LoadComposableNodes(ActionBase):
 class ExecuteProcess(ActionBase):
     cmd: tuple[Value, ...] | None
     name: Value | None = None
+    other: tuple[Value, ...] = ()  # as NodeAction.other
 
 
 @dataclass(frozen=True, slots=True)
@@ -281,6 +285,9 @@ class OpaqueAction(ActionBase):
 
     reason: str
     actions: tuple["Action", ...] = ()
+    # What the OpaqueFunction's body substituted itself (``lc.perform(context)``): the launch
+    # configurations it reads when it runs.
+    other: tuple[Value, ...] = ()
 
 
 Action = Union[
@@ -323,11 +330,13 @@ class TypeFact:
     """A value of a Python type that launch rejects where the launch file gives it
     (``wrong-argument-type``). ``kind``: "text", a bool or number where launch wants a string or
     substitutions; "pairs", a dict where launch iterates (name, value) pairs (``launch_arguments``);
-    "remap", a remap rule that is not a tuple (a list, or a dict's key). ``call`` names the
+    "remap", a remap rule that is not a tuple (a list, or a dict's key); "plain-bool" and
+    "plain-number", a string or substitution where launch uses the value as is (``shell``,
+    ``respawn_delay``). ``call`` names the
     argument as written (``DeclareLaunchArgument(default_value=...)``), ``value`` is the Python
     value's repr (shortened) and ``type`` its type's name."""
 
-    kind: Literal["text", "pairs", "remap"]
+    kind: Literal["text", "pairs", "remap", "plain-bool", "plain-number"]
     call: str
     value: str
     type: str

@@ -197,6 +197,8 @@ class Instantiator:
         elif isinstance(a, ir.OpaqueAction):
             if a.reason:
                 self.result.opaque.append((a.span, a.reason))
+            for value in a.other:
+                self.ev.eval(value, scope)
             self._walk(a.actions, scope)
         elif isinstance(a, (ir.Log, ir.Shutdown)):
             for val in (getattr(a, "message", None), getattr(a, "reason", None)):

@@ -183,6 +183,8 @@ class NodeBuilder:
             spans={k: s for k, s in a.field_spans}, package_from_config=package_from_config,
         )
         self._register(inst_, inst_.action_id)
+        for value in a.other:
+            self.inst.ev.eval(value, scope)
         for cn in a.composable_nodes:
             self.component(cn, scope, inst_.fqn, inst_.id, inst_.namespace, inst_.action_id)
 
@@ -211,6 +213,9 @@ class NodeBuilder:
             else:
                 namespace = container_ns if forward else "/"
         fqn = names.join_fqn(namespace, name) if (namespace and name) else None
+        for key, value, _span in cn.extra_arguments:
+            if key != "forward_global_arguments":  # read above
+                self.inst.ev.eval(value, scope)
         node_id = self._id()
         remaps, gparams = self._global_sources(scope, node_id)
         params = gparams + self._own_params(cn.parameters, scope, fqn or "/**")
@@ -261,6 +266,8 @@ class NodeBuilder:
     def process(self, a: ir.ExecuteProcess, scope: Scope) -> None:
         fr = self.inst.frame
         cmd = tuple(self.inst.ev.eval(x, scope) for x in (a.cmd or ()))
+        for value in a.other:
+            self.inst.ev.eval(value, scope)
         executable = cmd[0] if cmd else None
         inst_ = NodeInstance(
             id=self._id(), kind="process", package=None, executable=executable, name=None,

@@ -251,7 +251,9 @@ def call_ref(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any], 
         kind = "share" if qual.endswith("share_directory") else "prefix"
         return SymStr((FindPackage(to_value(pkg, span), kind, span, eager=True),))  # type: ignore[arg-type]
     if qual == "launch.utilities.perform_substitutions" and len(args) >= 2:
-        return SymStr(to_value(args[1], span))
+        value = to_value(args[1], span)
+        ev.performed.append(value)
+        return SymStr(value)
     if qual == "os.path.join":
         if any(symbolic.is_subst(a) for a in args):
             ev.concat("os.path.join", span, "substitution passed to os.path.join at description time")
@@ -313,11 +315,15 @@ def call_method(ev: Evaluator, obj: Any, name: str, args: list[Any], kwargs: dic
             obj.extra["entities"].append(args[0])
             return None
         if name == "perform" and symbolic.is_subst(obj):
-            return SymStr(to_value(obj, span))
+            value = to_value(obj, span)
+            ev.performed.append(value)
+            return SymStr(value)
         return Opaque(f"method {name} of {api.short(obj.qual)}", span)
     if isinstance(obj, ContextSym):
         if name == "perform_substitution" and args:
-            return SymStr(to_value(args[0], span))
+            value = to_value(args[0], span)
+            ev.performed.append(value)
+            return SymStr(value)
         return Opaque(f"context.{name}", span)
     if isinstance(obj, LaunchConfigsSym):
         if name == "get" and args and isinstance(args[0], str):
@@ -397,7 +403,9 @@ def make_lobj(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any],
         fargs = obj.arg(1, "args") or []
         fkwargs = obj.arg(2, "kwargs") or {}
         if isinstance(fn, UserFunc) and isinstance(fargs, (list, tuple)) and isinstance(fkwargs, dict):
+            start = len(ev.performed)
             obj.extra["result"] = call_user(ev, fn, [ContextSym(), *fargs], dict(fkwargs), span)
+            obj.extra["performed"] = tuple(ev.performed[start:])
         else:
             obj.extra["result"] = Opaque("OpaqueFunction with a function that cannot be evaluated statically", span)
     elif short in _HANDLER_KEYS:

@@ -60,6 +60,22 @@ def _not_text(v: Any) -> bool:
     return type(v) in (bool, int, float)
 
 
+# ExecuteLocal arguments normalized to substitutions that no rule models (``NodeAction.other``).
+_OTHER_ARGS = ("output", "respawn", "prefix", "cwd", "sigterm_timeout", "sigkill_timeout")
+
+
+# Arguments launch keeps as given and uses as a plain bool or number, never substituting them
+# (``ExecuteLocal.__init__``, ``GroupAction.__init__``): a substitution or a string there is always
+# true, or fails a comparison with a number when the process exits and is respawned.
+_PROCESS_PLAIN = (("respawn_delay", "number"), ("respawn_max_retries", "number"),
+                  ("emulate_tty", "bool"), ("shell", "bool"))
+_PLAIN_ARGS: dict[str, tuple[tuple[str, str], ...]] = {
+    **{n: _PROCESS_PLAIN for n in ("Node", "LifecycleNode", "ComposableNodeContainer",
+                                    "ExecuteProcess", "ExecuteLocal")},
+    "GroupAction": (("scoped", "bool"), ("forwarding", "bool")),
+}
+
+
 class ActionBuilder:
     def __init__(self, ev: Evaluator) -> None:
         self.ev = ev
@@ -164,7 +180,7 @@ class ActionBuilder:
             return L.LoadComposableNodes(i, s, cond, to_value(tgt, o.arg_span(-1, "target_container")), None, nodes)
         if n == "ExecuteProcess":
             return L.ExecuteProcess(i, s, cond, self._list_values(o.arg(-1, "cmd"), o.arg_span(-1, "cmd")),
-                                    opt_value(o, -1, "name"))
+                                    opt_value(o, -1, "name"), self._other(o))
         if n in ("TimerAction", "RosTimer"):
             return L.Timer(i, s, cond, self._v(o, 0, "period"), self.actions(o.arg(1, "actions", []), s), n == "RosTimer")
         if n == "RegisterEventHandler":
@@ -181,7 +197,8 @@ class ActionBuilder:
             result = o.extra.get("result")
             if isinstance(result, Opaque):
                 return L.OpaqueAction(i, s, cond, result.reason)
-            return L.OpaqueAction(i, s, cond, "", self.actions(result, s))
+            performed = tuple(v for v in o.extra.get("performed", ()) if v)
+            return L.OpaqueAction(i, s, cond, "", self.actions(result, s), performed)
         if n == "ResetLaunchConfigurations":
             lcs = o.arg(0, "launch_configurations")
             keep = tuple((to_value(k, s), to_value(v, s)) for k, v in lcs.items()) if isinstance(lcs, dict) else None
@@ -201,6 +218,13 @@ class ActionBuilder:
                 for k, v in enumerate(items):
                     if _not_text(v):
                         self.ev.wrong_type("text", f"{n}({name}=[...])", v, span_at(items, k, span))
+        for name, want in _PLAIN_ARGS.get(n, ()):
+            v = o.arg(-1, name)
+            if not (isinstance(v, str) or (isinstance(v, LObj) and api.is_substitution(v.qual))):
+                continue
+            if want == "number" and o.arg(-1, "respawn", False) is False:
+                continue  # only compared when the process is respawned
+            self.ev.wrong_type(f"plain-{want}", f"{n}({name}=...)", v, o.arg_span(-1, name))  # type: ignore[arg-type]
         if n == "GroupAction":
             lcs = o.arg(-1, "launch_configurations")
             if isinstance(lcs, dict):
@@ -291,7 +315,24 @@ class ActionBuilder:
             self._list_values(kw.get("arguments"), o.arg_span(-1, "arguments")),
             self._list_values(kw.get("ros_arguments"), o.arg_span(-1, "ros_arguments")),
             self._composables(kw.get("composable_node_descriptions"), s) if kind == "container" else (),
-            fields, opt_value(o, -1, "exec_name"))
+            fields, opt_value(o, -1, "exec_name"), self._other(o))
+
+    def _other(self, o: LObj) -> tuple[Value, ...]:
+        """Process arguments launch substitutes that no rule models (``NodeAction.other``)."""
+        out: list[Value] = []
+        for name in _OTHER_ARGS:
+            v = o.arg(-1, name)
+            if v is None or type(v) in (bool, int, float):
+                continue
+            value = opt_value(o, -1, name)
+            if value:
+                out.append(value)
+        env = o.arg(-1, "additional_env")
+        if isinstance(env, dict):
+            span = o.arg_span(-1, "additional_env")
+            for k, v in env.items():
+                out.extend(x for x in (to_value(k, span), to_value(v, span)) if x)
+        return tuple(out)
 
     def _composables(self, v: Any, span: Span) -> tuple[L.ComposableNode, ...]:
         if v is None:

@@ -26,6 +26,9 @@ class Recorder:
         self.kw_kinds: dict[tuple[int, str], str] = {}
         self.read_files: list[str] = []
         self.wrong_types: dict[tuple[str, Span], TypeFact] = {}
+        # Values substituted eagerly (``lc.perform(context)``): read when the OpaqueFunction runs,
+        # wherever the result goes.
+        self.performed: list[Value] = []
 
     def register(self, obj: Any, spans: Any) -> Any:
         self.containers[id(obj)] = (obj, spans)
@@ -46,7 +49,9 @@ class Recorder:
             text = _shown(value)
             if len(text) > 60:
                 text = text[:57] + "..."
-            self.wrong_types[key] = TypeFact(kind, call, text, type(value).__name__, span)  # type: ignore[arg-type]
+            kind_name = "substitution" if is_subst(value) else \
+                "string" if isinstance(value, str) else type(value).__name__
+            self.wrong_types[key] = TypeFact(kind, call, text, kind_name, span)  # type: ignore[arg-type]
 
 
 def _shown(value: Any) -> str:
@@ -61,6 +66,9 @@ def _shown(value: Any) -> str:
         return repr(str(value))
     if type(value) in (bool, int, float):
         return repr(value)
+    if is_subst(value):
+        args = ", ".join(_shown(a) for a in getattr(value, "args", ()))
+        return f"{api.short(value.qual)}({args})"
     return "..."
 
 

@@ -95,8 +95,8 @@ def _wrong_type_text(f: TypeFact) -> tuple[str, str]:
         message = (f"{f.call} is given the {f.type} {f.value}, where launch accepts only a string or "
                    f"substitutions; it raises \"TypeError: '{f.type}' object is not iterable\"")
         return message, f"write it as a string such as {example}"
+    name = f.call.split("(", 1)[1].split("=", 1)[0]  # the keyword: "Node(shell=...)" -> "shell"
     if f.kind == "plain-bool":
-        name = f.call.split("(", 1)[1].split("=", 1)[0]
         what = "a substitution object" if f.type == "substitution" else "a non-empty string"
         message = (f"{f.call} is given {f.value}, a {f.type}: launch uses it as a plain bool "
                    f"without evaluating it, and {what} is true, so {name} is always on")
@@ -107,7 +107,6 @@ def _wrong_type_text(f: TypeFact) -> tuple[str, str]:
                  "IfCondition / UnlessCondition")
         return message, help_
     if f.kind == "plain-number":
-        name = f.call.split("(", 1)[1].split("=", 1)[0]
         message = (f"{f.call} is given {f.value}, a {f.type}: launch keeps it as is and compares it "
                    "with a number when the process exits and is respawned, which raises "
                    "TypeError ('>' or '<' not supported)")

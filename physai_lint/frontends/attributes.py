@@ -13,10 +13,13 @@ frontend's ``Entity.get_attr`` treats a value:
 from __future__ import annotations
 
 from collections.abc import Iterator
+from typing import TYPE_CHECKING
 
-from physai_lint.frontends.markup import Attr, Element
 from physai_lint.frontends.tags import ACCEPTED_BY_SCHEMA, ALIASES, suggest
 from physai_lint.model.findings import Diagnostic
+
+if TYPE_CHECKING:
+    from physai_lint.frontends.markup import Attr, Element
 
 # What each tag's parse() reads without optional=True. ("arg" under "include" is its own schema.)
 REQUIRED: dict[str, tuple[str, ...]] = {

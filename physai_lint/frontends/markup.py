@@ -10,6 +10,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Literal
 
+from physai_lint.frontends.attributes import attribute_problems
 from physai_lint.frontends.substitutions import parse_substitutions
 from physai_lint.model.findings import Diagnostic
 from physai_lint.model.launch import (
@@ -387,8 +388,6 @@ _ACTIONS: dict[str, Callable[[_Builder, Element], Action]] = {
 def build_launch_file(path: str, fmt: Literal["xml", "yaml"], root: Element,
                       ) -> tuple[LaunchFile, list[Diagnostic]]:
     """The IR of a ``<launch>`` element tree, plus substitution/condition diagnostics."""
-    from physai_lint.frontends.attributes import attribute_problems
-
     b = _Builder(path, fmt)
     b.record(root)
     actions = b.actions(root.children)

@@ -213,9 +213,8 @@ class NodeBuilder:
             else:
                 namespace = container_ns if forward else "/"
         fqn = names.join_fqn(namespace, name) if (namespace and name) else None
-        for key, value, _span in cn.extra_arguments:
-            if key != "forward_global_arguments":  # read above
-                self.inst.ev.eval(value, scope)
+        for _key, value, _span in cn.extra_arguments:  # read when the component is loaded
+            self.inst.ev.eval(value, scope)
         node_id = self._id()
         remaps, gparams = self._global_sources(scope, node_id)
         params = gparams + self._own_params(cn.parameters, scope, fqn or "/**")

@@ -251,9 +251,7 @@ def call_ref(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any], 
         kind = "share" if qual.endswith("share_directory") else "prefix"
         return SymStr((FindPackage(to_value(pkg, span), kind, span, eager=True),))  # type: ignore[arg-type]
     if qual == "launch.utilities.perform_substitutions" and len(args) >= 2:
-        value = to_value(args[1], span)
-        ev.performed.append(value)
-        return SymStr(value)
+        return _performed(ev, args[1], span)
     if qual == "os.path.join":
         if any(symbolic.is_subst(a) for a in args):
             ev.concat("os.path.join", span, "substitution passed to os.path.join at description time")
@@ -309,21 +307,25 @@ def load_data(ev: Evaluator, qual: str, src: Any, span: Span) -> Any:
 _SYM_STR_METHODS = frozenset({"lower", "upper", "casefold", "strip", "lstrip", "rstrip"})
 
 
+def _performed(ev: Evaluator, subst: Any, span: Span) -> SymStr:
+    """What substituting ``subst`` now gives (``lc.perform(context)``), noted as performed: the
+    OpaqueFunction running this reads its launch configurations wherever the result goes."""
+    value = to_value(subst, span)
+    ev.performed.append(value)
+    return SymStr(value)
+
+
 def call_method(ev: Evaluator, obj: Any, name: str, args: list[Any], kwargs: dict[str, Any], span: Span) -> Any:
     if isinstance(obj, LObj):
         if name in ("add_action", "add_entity") and "entities" in obj.extra and args:
             obj.extra["entities"].append(args[0])
             return None
         if name == "perform" and symbolic.is_subst(obj):
-            value = to_value(obj, span)
-            ev.performed.append(value)
-            return SymStr(value)
+            return _performed(ev, obj, span)
         return Opaque(f"method {name} of {api.short(obj.qual)}", span)
     if isinstance(obj, ContextSym):
         if name == "perform_substitution" and args:
-            value = to_value(args[0], span)
-            ev.performed.append(value)
-            return SymStr(value)
+            return _performed(ev, args[0], span)
         return Opaque(f"context.{name}", span)
     if isinstance(obj, LaunchConfigsSym):
         if name == "get" and args and isinstance(args[0], str):

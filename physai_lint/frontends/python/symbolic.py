@@ -67,7 +67,7 @@ def _shown(value: Any) -> str:
     if type(value) in (bool, int, float):
         return repr(value)
     if is_subst(value):
-        args = ", ".join(_shown(a) for a in getattr(value, "args", ()))
+        args = ", ".join(_shown(a) for a in value.args)
         return f"{api.short(value.qual)}({args})"
     return "..."
 

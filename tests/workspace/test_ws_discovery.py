@@ -73,6 +73,17 @@ def test_gitignore(ws):
     assert "src/cpp_pkg/launch/bringup.launch.xml" in rel(ws, discover([str(ws)], respect_gitignore=False).launch_files)
 
 
+def test_gitignore_above_the_walked_folder(ws):
+    # the checkout's root and its .gitignore lie above the folder given: still read
+    (ws / ".git").mkdir()
+    (ws / ".gitignore").write_text("bringup.launch.xml\n")
+    (ws / "src/cpp_pkg/.gitignore").write_text("config/\n")
+    d = discover([str(ws / "src/cpp_pkg")])
+    assert "src/cpp_pkg/launch/bringup.launch.xml" not in rel(ws, d.launch_files)
+    assert not any(n.startswith("src/cpp_pkg/config/") for n in rel(ws, d.param_files))
+    assert rel(ws, d.launch_files)  # the rest is found
+
+
 def test_gitignore_outside_checkout_is_ignored(ws):
     (ws / ".gitignore").write_text("*.launch.py\n")  # no .git: not a checkout
     assert "src/py_pkg/launch/demo.launch.py" in rel(ws, discover([str(ws)]).launch_files)

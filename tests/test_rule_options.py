@@ -124,3 +124,20 @@ def test_x002_max_bytes(tmp_path, demo_package, limit: int, reported: bool) -> N
         assert found and found[0].startswith("file is ") and found[0].endswith("larger than the 100 bytes limit")
     else:
         assert found == []
+
+
+def test_t201_t202_leave_invalid_names_to_n104(tmp_path, demo_package) -> None:
+    # the talker's "chatter_out" remapped to an invalid name: N104 reports it; T202 does not, and
+    # T201 does not suggest it for the listener's "/chatter_ou"
+    launch = LAUNCH.replace('<node pkg="demo" exec="talker" name="talker"/>',
+                            '<node pkg="demo" exec="talker" name="talker">'
+                            '<remap from="chatter_out" to="/chatter//ou"/></node>')
+    pkg = demo_package({"launch/a.launch.xml": launch})
+    (tmp_path / "interfaces.yaml").write_text(INTERFACES)
+    opts = CheckOptions(paths=[str(pkg / "launch/a.launch.xml")], workspace=str(tmp_path), cache=False,
+                        interfaces=[str(tmp_path / "interfaces.yaml")],
+                        rule_options={"T202": {"only-with-near-miss": False}})
+    found = sorted((f.code, f.message) for f in run_check(opts).findings)
+    assert any("//" in m for m in _codes(found, "N104") + _codes(found, "N105"))
+    assert not any("//" in m for c, m in found if c in ("T201", "T202"))
+    assert any('"/chatter_ou"' in m for m in _codes(found, "T201"))

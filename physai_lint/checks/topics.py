@@ -223,6 +223,12 @@ T202_IGNORE_TOPICS = ("/rosout", "/parameter_events", "/tf", "/tf_static", "/dia
                       "/robot_description")
 
 
+def _valid(topic: str) -> bool:
+    from physai_lint.resolve.names import validate_full_topic_name
+
+    return validate_full_topic_name(topic) is None
+
+
 def _dangling(ctx: CheckContext, mine: str, other: str, code: str) -> Iterator[Diagnostic]:
     from fnmatch import fnmatchcase
 
@@ -237,7 +243,7 @@ def _dangling(ctx: CheckContext, mine: str, other: str, code: str) -> Iterator[D
             continue  # a launch of one node (a filter, a driver): its inputs and outputs are others'
         by_topic: dict[str, set[str]] = {}  # topic -> nodes with an endpoint of the other kind
         for o in g.of_kind(other):  # type: ignore[arg-type]
-            if o.resolved:
+            if o.resolved and _valid(o.resolved):  # an invalid name (N104) is never suggested
                 by_topic.setdefault(o.resolved, set()).add(o.node)
         others = set(by_topic)
         # A near miss is another node's topic: a filter's "output/pointcloud" is not a misspelt
@@ -249,6 +255,8 @@ def _dangling(ctx: CheckContext, mine: str, other: str, code: str) -> Iterator[D
         for e in g.of_kind(mine):  # type: ignore[arg-type]
             if e.resolved is None or e.resolved in others or e.resolved.split("/")[-1].startswith("_"):
                 continue
+            if not _valid(e.resolved):
+                continue  # N104 reports the name itself; no node could ever match it
             if e.resolved in _IMPLICIT_TOPICS or any(fnmatchcase(e.resolved, p) for p in ignore):
                 continue
             node = g.node(e.node)

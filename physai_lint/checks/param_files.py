@@ -157,8 +157,12 @@ def mixed_array(ctx: CheckContext) -> Iterator[Diagnostic]:
                 if prm.typed_by == "yaml" and prm.value is None and prm.raw and prm.raw.strip().startswith("[") \
                         and prm.span not in seen:
                     seen.add(prm.span)
+                    empty = prm.raw.strip()[1:].strip() == "]"
                     yield Diagnostic(
                         "P106", prm.span,
-                        f'parameter "{prm.name}" value "{prm.raw}" is a list with items of different types; '
-                        'launch raises "Expected a non-empty sequence, with items of uniform type"',
-                        help="make every item the same type (e.g. all floats: 1.0, 2.5)", key=prm.name)
+                        f'parameter "{prm.name}" value "{prm.raw}" is '
+                        + ("an empty list" if empty else "a list with items of different types")
+                        + '; launch raises "Expected a non-empty sequence, with items of uniform type"',
+                        help=("an empty list has no type for launch to give it: leave the parameter out, "
+                              "or give it a value of its type (e.g. [\"\"], [0])" if empty else
+                              "make every item the same type (e.g. all floats: 1.0, 2.5)"), key=prm.name)

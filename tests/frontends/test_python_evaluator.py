@@ -157,6 +157,43 @@ def test_opaque_function_branch_returns_and_failure():
     assert isinstance(bad, L.OpaqueAction) and bad.reason and bad.actions == ()
 
 
+def test_object_made_in_both_branches_keeps_each_under_its_branch():
+    # zed-ros2-wrapper's pattern: one variable, a different object per branch, used after the if
+    (stereo, mono, load) = actions("""
+        import os
+        from launch_ros.actions import LoadComposableNodes, Node
+        from launch_ros.descriptions import ComposableNode
+
+        def generate_launch_description():
+            if os.environ.get('MODEL') in ('a', 'b'):
+                comp = ComposableNode(package='p', plugin='p::Stereo', name='cam')
+                node = Node(package='p', executable='stereo')
+            else:
+                comp = ComposableNode(package='p', plugin='p::Mono', name='cam')
+                node = Node(package='p', executable='mono')
+            return [node, LoadComposableNodes(target_container='c', composable_node_descriptions=[comp])]
+    """)
+    # each action under its branch's condition, as if it had been returned from there
+    assert [(g.condition.kind, lit(g.actions[0].executable)) for g in (stereo, mono)] == \
+        [("if", "stereo"), ("unless", "mono")]
+    assert [(lit(c.plugin), c.condition.kind) for c in load.nodes] == [("p::Stereo", "if"), ("p::Mono", "unless")]
+
+
+def test_object_made_before_the_branch_stays_unknown():
+    # made before the if, replaced in one branch only: which one runs is not a branch's condition
+    (opaque,) = actions("""
+        import os
+        from launch_ros.actions import Node
+
+        def generate_launch_description():
+            node = Node(package='p', executable='default')
+            if os.environ.get('MODEL'):
+                node = Node(package='p', executable='other')
+            return [node]
+    """)
+    assert isinstance(opaque, L.OpaqueAction) and "condition known only at launch time" in opaque.reason
+
+
 def test_unknown_values_stay_unknown():
     acts = actions("""
         import os

@@ -9,7 +9,7 @@ from physai_lint.model.values import BoolOp, Unknown, Value, literal_of
 
 from . import api
 from .convert_values import opt_value, span_at, to_condition, to_params, to_pvalue, to_value
-from .runtime import CondTag, LObj, Opaque, type_name
+from .runtime import Alternatives, CondTag, LObj, Opaque, type_name
 
 if TYPE_CHECKING:
     from .evaluator import Evaluator
@@ -107,6 +107,8 @@ class ActionBuilder:
             return []
         if isinstance(v, (list, tuple)):
             return list(self.actions(v, span))
+        if isinstance(v, Alternatives):  # each under the condition of the branch it was made in
+            return [a for o in v.options for a in self.entity(o, span)]
         if isinstance(v, Opaque):
             return [self._opaque(v.reason, v.span or span)]
         if isinstance(v, LObj) and v.qual == "launch.LaunchDescription":
@@ -338,6 +340,7 @@ class ActionBuilder:
         if v is None:
             return ()
         items = v if isinstance(v, (list, tuple)) else [v]
+        items = [o for c in items for o in (c.options if isinstance(c, Alternatives) else (c,))]
         out = []
         for c in items:
             if not (isinstance(c, LObj) and api.short(c.qual) == "ComposableNode"):

@@ -211,7 +211,11 @@ def to_pvalue(v: Any, span: Span) -> PValue:
         return PSubst(to_value(inner, v.arg_span(0, "value")), vt_name, v.span)
     if isinstance(v, Opaque):
         return PUnknown(v.reason, v.span or span)
-    if isinstance(v, (SymStr, KPath)) or (isinstance(v, LObj) and api.is_substitution(v.qual)):
+    if isinstance(v, SymStr):
+        # A Python str at description time (``.perform(context)``, a share path, an f-string):
+        # normalize_parameter_dict yaml.dump-s every str, so it stays a string whatever it reads.
+        return PSubst(to_value(v, span), "str", span)
+    if isinstance(v, KPath) or (isinstance(v, LObj) and api.is_substitution(v.qual)):
         return PSubst(to_value(v, span), None, span)
     return PUnknown(f"parameter value of type {type_name(v)}", span)
 

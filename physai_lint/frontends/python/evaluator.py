@@ -33,7 +33,7 @@ from .core import (
 )
 from .expressions import ExpressionsMixin
 from .positions import SpanMaker
-from .runtime import CondTag, ModuleValue, Opaque, Ref, SymBool, UserFunc
+from .runtime import Alternatives, CondTag, LObj, ModuleValue, Opaque, Ref, SymBool, UserFunc
 
 __all__ = ["BUILTIN_NAMES", "MAX_DEPTH", "Abort", "Evaluator", "ModuleCtx", "Scope", "is_concrete", "truth"]
 
@@ -307,7 +307,7 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
             envs.append(scope.vars)
             rets.append(ret)
         if rets[0] is not NO and rets[1] is not NO:
-            raise Return(self.merge(rets[0], rets[1]))
+            raise Return(self.merge(rets[0], rets[1], tags))
         for i in (0, 1):
             if rets[i] is not NO:
                 scope.vars = envs[1 - i]
@@ -319,12 +319,18 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
                 return
         merged = dict(envs[0])
         for name, v in envs[1].items():
-            merged[name] = self.merge(merged[name], v) if name in merged else v
+            merged[name] = self.merge(merged[name], v, tags) if name in merged else v
         scope.vars = merged
 
-    def merge(self, a: Any, b: Any) -> Any:
+    def merge(self, a: Any, b: Any, tags: tuple[CondTag, CondTag] | None = None) -> Any:
+        """The value of a name (or a return value) after an ``if`` the evaluator could not decide,
+        ``a`` from its body and ``b`` from its else (under ``tags``)."""
         if a is b:
             return a
+        if tags is not None:
+            options = _made_under(a, tags[0]) + _made_under(b, tags[1])
+            if options and len(options) == len(_options(a)) + len(_options(b)):
+                return Alternatives("value depends on a condition known only at launch time", None, options)
         if isinstance(a, (list, tuple)) and isinstance(b, (list, tuple)):
             return list(a) + [x for x in b if not any(x is y for y in a)]
         if is_concrete(a) and is_concrete(b):
@@ -357,3 +363,14 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
         return result
 
 
+def _options(v: Any) -> tuple[Any, ...]:
+    return v.options if isinstance(v, Alternatives) else (v,)
+
+
+def _made_under(v: Any, tag: CondTag) -> tuple[Any, ...]:
+    """The launch objects ``v`` stands for, when every one of them was made under ``tag`` (so the
+    branch's condition follows each of them); else ()."""
+    options = _options(v)
+    if all(isinstance(o, LObj) and tag in o.tags for o in options):
+        return options
+    return ()

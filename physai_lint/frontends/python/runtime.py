@@ -34,6 +34,16 @@ class Opaque:
 
 
 @dataclass(eq=False)
+class Alternatives(Opaque):
+    """One of several launch objects, each made in its own branch of an ``if`` the evaluator could
+    not decide (``comp = ComposableNode(...A)`` / ``else: comp = ComposableNode(...B)``, used
+    after the ``if``). Unknown to everything but the action and description lists, which keep
+    every option under the condition of the branch it was made in, as for actions made there."""
+
+    options: tuple[Any, ...] = ()
+
+
+@dataclass(eq=False)
 class SymStr:
     """A Python ``str`` at description time whose content is only known symbolically
     (``get_package_share_directory(...)``, ``LaunchConfiguration('x').perform(context)``)."""

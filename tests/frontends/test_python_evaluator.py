@@ -194,6 +194,49 @@ def test_object_made_before_the_branch_stays_unknown():
     assert isinstance(opaque, L.OpaqueAction) and "condition known only at launch time" in opaque.reason
 
 
+def test_made_before_added_in_a_branch_is_under_the_branch():
+    # a node made before an undecided if and added in one branch runs only under that branch
+    acts = actions("""
+        import os
+        from launch import LaunchDescription
+        from launch_ros.actions import Node
+
+        def generate_launch_description():
+            ld = LaunchDescription()
+            rviz = Node(package='rviz2', executable='rviz2')
+            extra = [Node(package='p', executable='always')]
+            if os.environ.get('RVIZ') == 'true':
+                ld.add_action(rviz)
+                extra.append(Node(package='p', executable='made_inside'))
+            else:
+                extra.append(rviz)
+            for a in extra:
+                ld.add_action(a)
+            return ld
+    """)
+    shown = [(a.condition.kind if isinstance(a, L.Group) else None,
+              lit((a.actions[0] if isinstance(a, L.Group) else a).executable)) for a in acts]
+    assert shown == [("if", "rviz2"), (None, "always"), ("if", "made_inside"), ("unless", "rviz2")]
+
+
+def test_list_changed_otherwise_in_a_branch_is_left_alone():
+    acts = actions("""
+        import os
+        from launch_ros.actions import Node
+
+        def generate_launch_description():
+            nodes = [Node(package='p', executable='a'), Node(package='p', executable='b')]
+            if os.environ.get('X'):
+                nodes.pop()
+                nodes.append(Node(package='p', executable='c'))
+            return nodes
+    """)
+    # not marked: only what the branch made carries its condition (as before this marking)
+    shown = [(a.condition.kind if isinstance(a, L.Group) else None,
+              lit((a.actions[0] if isinstance(a, L.Group) else a).executable)) for a in acts]
+    assert shown == [(None, "a"), ("if", "c")]
+
+
 def test_unknown_values_stay_unknown():
     acts = actions("""
         import os

@@ -9,7 +9,7 @@ from physai_lint.model.values import BoolOp, Unknown, Value, literal_of
 
 from . import api
 from .convert_values import opt_value, span_at, to_condition, to_params, to_pvalue, to_value
-from .runtime import Alternatives, CondTag, LObj, Opaque, type_name
+from .runtime import Alternatives, Branched, CondTag, LObj, Opaque, type_name
 
 if TYPE_CHECKING:
     from .evaluator import Evaluator
@@ -109,6 +109,8 @@ class ActionBuilder:
             return list(self.actions(v, span))
         if isinstance(v, Alternatives):  # each under the condition of the branch it was made in
             return [a for o in v.options for a in self.entity(o, span)]
+        if isinstance(v, Branched):  # under the condition of the branch that added it
+            return self._under(v.tag, v.value, span)
         if isinstance(v, Opaque):
             return [self._opaque(v.reason, v.span or span)]
         if isinstance(v, LObj) and v.qual == "launch.LaunchDescription":
@@ -116,6 +118,25 @@ class ActionBuilder:
         if isinstance(v, LObj) and v.qual in api.ACTION_KINDS:
             return [self.wrapped(v)]
         return [self._opaque(f"not a launch action ({type_name(v)})", span)]
+
+    def _under(self, tag: CondTag, value: Any, span: Span) -> list[L.Action]:
+        """``value``'s actions under ``tag``'s condition (unless an enclosing action carries it)."""
+        if tag in self.applied:
+            return self.entity(value, span)
+        if tag.condition is None:
+            return [self._opaque(tag.reason, span)]
+        self.applied.append(tag)
+        try:
+            inner = self.entity(value, span)
+        finally:
+            self.applied.pop()
+        if not inner:
+            return []
+        c = tag.condition
+        base = f"{inner[0].id}/{c.raw}@{c.span.line}:{c.span.col}"
+        n = self.opaque_ids.get(base, 0) + 1
+        self.opaque_ids[base] = n
+        return [L.Group(base if n == 1 else f"{base}#{n}", c.span, c, tuple(inner), scoped=False)]
 
     def _new_tags(self, obj: LObj) -> list[CondTag]:
         """The branches ``obj`` was made under that no enclosing action carries already."""
@@ -343,6 +364,10 @@ class ActionBuilder:
         items = [o for c in items for o in (c.options if isinstance(c, Alternatives) else (c,))]
         out = []
         for c in items:
+            added: list[CondTag] = []
+            while isinstance(c, Branched):  # added under an undecided if: its condition
+                added.append(c.tag)
+                c = c.value
             if not (isinstance(c, LObj) and api.short(c.qual) == "ComposableNode"):
                 continue
             extra: list[tuple[str, Value, Span]] = []
@@ -355,16 +380,19 @@ class ActionBuilder:
                 opt_value(c, -1, "namespace"), to_params(c.kwargs.get("parameters"), c.arg_span(-1, "parameters")),
                 self._remaps(c.kwargs.get("remappings"), c.arg_span(-1, "remappings"), "ComposableNode"), tuple(extra),
                 c.span,
-                self._branch_condition(c, to_condition(c.kwargs.get("condition"), c.span)), self.id_of(c)))
+                self._branch_condition(c, to_condition(c.kwargs.get("condition"), c.span), added),
+                self.id_of(c)))
         return tuple(out)
 
-    def _branch_condition(self, obj: LObj, own: L.Condition | None) -> L.Condition | None:
+    def _branch_condition(self, obj: LObj, own: L.Condition | None, added: list[CondTag] | None = None
+                          ) -> L.Condition | None:
         """A description (not an action, so no Group can carry it) made under an ``if`` the
-        evaluator could not decide gets that ``if`` as its own condition, and-ed with the one it
-        was given: otherwise both branches of ``if mode == "a": ... else: ...`` load their
-        components."""
+        evaluator could not decide, or ``added`` to a list under one, gets that ``if`` as its own
+        condition, and-ed with the one it was given: otherwise both branches of
+        ``if mode == "a": ... else: ...`` load their components."""
+        tags = self._new_tags(obj) + [t for t in added or () if t not in obj.tags and t not in self.applied]
         conds = [t.condition or L.Condition("if", (Unknown(t.reason, obj.span),), obj.span, "if ...")
-                 for t in self._new_tags(obj)]
+                 for t in tags]
         if not conds:
             return own
         if own is not None:

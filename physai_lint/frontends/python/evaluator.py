@@ -33,7 +33,7 @@ from .core import (
 )
 from .expressions import ExpressionsMixin
 from .positions import SpanMaker
-from .runtime import Alternatives, CondTag, LObj, ModuleValue, Opaque, Ref, SymBool, UserFunc
+from .runtime import Alternatives, Branched, CondTag, LObj, ModuleValue, Opaque, Ref, SymBool, UserFunc
 
 __all__ = ["BUILTIN_NAMES", "MAX_DEPTH", "Abort", "Evaluator", "ModuleCtx", "Scope", "is_concrete", "truth"]
 
@@ -290,6 +290,7 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
             unknown = (UnknownValue(f"a Python condition that cannot be evaluated statically ({reason})", span),)
             tags = (CondTag(Condition("if", unknown, span, "if")), CondTag(Condition("unless", unknown, span, "else")))
         snapshot = dict(scope.vars)
+        watched = _lists_of(snapshot)
         envs: list[dict[str, Any]] = []
         rets: list[Any] = []
         for tag, block in zip(tags, (body, orelse)):
@@ -304,8 +305,12 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
                 pass
             finally:
                 self.cond_stack.pop()
+                for w in watched:
+                    w.after(tag)
             envs.append(scope.vars)
             rets.append(ret)
+        for w in watched:
+            w.mark()
         if rets[0] is not NO and rets[1] is not NO:
             raise Return(self.merge(rets[0], rets[1], tags))
         for i in (0, 1):
@@ -374,3 +379,44 @@ def _made_under(v: Any, tag: CondTag) -> tuple[Any, ...]:
     if all(isinstance(o, LObj) and tag in o.tags for o in options):
         return options
     return ()
+
+
+class _Watched:
+    """A list that existed before an undecided ``if``: the items each branch appended to it are
+    marked ``Branched`` with that branch's tag once both have run (both branches mutate the same
+    list, one after the other). A list a branch did more to than append to is left as it was."""
+
+    def __init__(self, items: list[Any]) -> None:
+        self.items = items
+        self.before = list(items)
+        self.added: list[tuple[int, int, CondTag]] = []
+        self.plain = True
+
+    def after(self, tag: CondTag) -> None:
+        n = len(self.before)
+        if len(self.items) < n or any(a is not b for a, b in zip(self.items, self.before)):
+            self.plain = False
+            return
+        if len(self.items) > n:
+            self.added.append((n, len(self.items), tag))
+        self.before = list(self.items)
+
+    def mark(self) -> None:
+        if not self.plain:
+            return
+        for start, end, tag in self.added:
+            for k in range(start, end):
+                self.items[k] = Branched("added under a condition known only at launch time",
+                                         None, self.items[k], tag)
+
+
+def _lists_of(variables: dict[str, Any]) -> list[_Watched]:
+    """The lists a branch could append to: local variables' lists, and the entities of local
+    ``LaunchDescription`` objects (``ld.add_action``)."""
+    out: dict[int, _Watched] = {}
+    for v in variables.values():
+        if isinstance(v, LObj):
+            v = v.extra.get("entities")
+        if type(v) is list and id(v) not in out:
+            out[id(v)] = _Watched(v)
+    return list(out.values())

@@ -99,6 +99,16 @@ class LObj:
         return self.span
 
 
+@dataclass(eq=False)
+class Branched(Opaque):
+    """An item a branch of an ``if`` the evaluator could not decide added to a list made before
+    the ``if`` (``params.append(path)`` under ``if path != '':``). Unknown to everything but the
+    action and description lists, which keep ``value`` under the condition of that branch."""
+
+    value: Any = None
+    tag: Any = None  # CondTag
+
+
 @dataclass(frozen=True)
 class CondTag:
     """Why an object was created conditionally: a symbolic ``Condition`` or an unknown reason."""

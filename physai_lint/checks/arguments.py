@@ -52,7 +52,7 @@ def unused_argument(ctx: CheckContext) -> Iterator[Diagnostic]:
                 continue
             if launch.opaque and any(s.file == arg.file for s, _ in launch.opaque):
                 continue
-            if _read_anywhere(ctx, arg.file, arg.name):
+            if _read_anywhere(ctx, arg.file, arg.name) or arg.name in _escaped(ctx, arg.file):
                 continue
             seen.add((arg.span, arg.name))
             yield Diagnostic(
@@ -61,6 +61,12 @@ def unused_argument(ctx: CheckContext) -> Iterator[Diagnostic]:
                 help=f'read it with LaunchConfiguration("{arg.name}") / $(var {arg.name}), '
                      "or remove the declaration",
                 key=arg.name)
+
+
+def _escaped(ctx: CheckContext, file: str) -> tuple[str, ...]:
+    """Configurations the Python file hands to code the linter cannot follow, which may read them."""
+    facts = getattr(ctx.launch_files.get(file), "python", None)
+    return getattr(facts, "escaped", ())
 
 
 def _read_anywhere(ctx: CheckContext, file: str, name: str) -> bool:

@@ -362,6 +362,9 @@ class PythonFacts:
     # Defines generate_test_description(): a launch_testing file, run by `launch_test`, not `ros2 launch`.
     is_launch_test: bool = False
     wrong_types: tuple[TypeFact, ...] = ()
+    # Launch configurations (by name) handed to code the linter cannot follow (MoveItConfigsBuilder,
+    # an unknown helper): it may read them, so they are never reported unused.
+    escaped: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True, slots=True)

@@ -79,3 +79,33 @@ def test_python_reads(tmp_path, demo_package):
 def test_xml_reads(tmp_path, demo_package):
     assert _findings(tmp_path, demo_package, "a.launch.xml", XML) == [
         ("L101", "missing_prefix"), ("L102", "unused")]
+
+
+BUILDER = """
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration, PathJoinSubstitution
+from launch_ros.actions import Node
+from moveit_configs_utils import MoveItConfigsBuilder
+
+
+def generate_launch_description():
+    config = (
+        MoveItConfigsBuilder("panda")
+        .robot_description(file_path="config/panda.urdf.xacro",
+                           mappings={"hardware": LaunchConfiguration("hardware")})
+        .robot_description_semantic(file_path=PathJoinSubstitution(["srdf", LaunchConfiguration("srdf")]))
+        .to_moveit_configs()
+    )
+    return LaunchDescription([
+        DeclareLaunchArgument("hardware", default_value="mock"),
+        DeclareLaunchArgument("srdf", default_value="panda.srdf"),
+        DeclareLaunchArgument("unused", default_value="x"),
+        Node(package="demo", executable="move_group", parameters=[config.to_dict()]),
+    ])
+"""
+
+
+def test_configurations_handed_to_a_library_may_be_read(tmp_path, demo_package):
+    # moveit_configs_utils turns the mappings into a xacro Command: launch reads them
+    assert _findings(tmp_path, demo_package, "a.launch.py", BUILDER) == [("L102", "unused")]

@@ -169,6 +169,7 @@ def call(ev: Evaluator, func: Any, args: list[Any], kwargs: dict[str, Any], node
         return classes.instantiate(ev, func, args, kwargs, span)
     if isinstance(func, Decorator) and func.kind == "cache" and len(args) == 1 and isinstance(args[0], UserFunc):
         return classes.cached(args[0], func.maxsize)
+    ev.escape([*args, *kwargs.values()])
     if isinstance(func, Opaque):
         return Opaque(func.reason, span)
     return Opaque("call of a value that cannot be evaluated statically", span)
@@ -273,6 +274,7 @@ def call_ref(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any], 
         return env_read(ev, args[0] if args else kwargs.get("key"), span)
     if qual.startswith("os.environ") or qual == "os.getcwd":
         return Opaque("depends on the environment", span)
+    ev.escape([*args, *kwargs.values()])
     return Opaque(f'call of "{qual}" cannot be evaluated statically', span)
 
 
@@ -322,6 +324,7 @@ def call_method(ev: Evaluator, obj: Any, name: str, args: list[Any], kwargs: dic
             return None
         if name == "perform" and symbolic.is_subst(obj):
             return _performed(ev, obj, span)
+        ev.escape([*args, *kwargs.values()])
         return Opaque(f"method {name} of {api.short(obj.qual)}", span)
     if isinstance(obj, ContextSym):
         if name == "perform_substitution" and args:
@@ -373,6 +376,7 @@ def call_method(ev: Evaluator, obj: Any, name: str, args: list[Any], kwargs: dic
                 ev.register(result, [spans.get(k, (span, span))[0] for k, _ in result])
         return result
     if isinstance(obj, Opaque):
+        ev.escape([*args, *kwargs.values()])
         return Opaque(obj.reason, span)
     return Opaque(f'method "{name}" cannot be evaluated statically', span)
 

@@ -29,6 +29,27 @@ class Recorder:
         # Values substituted eagerly (``lc.perform(context)``): read when the OpaqueFunction runs,
         # wherever the result goes.
         self.performed: list[Value] = []
+        # Launch configurations handed to code the evaluator cannot follow (a library's builder,
+        # an unknown function): that code may read them.
+        self.escaped: set[str] = set()
+
+    def escape(self, values: Any, depth: int = 0) -> None:
+        """Note the launch configurations (by literal name) in ``values``: arguments of a call the
+        evaluator cannot follow, searched through lists, tuples, dicts and launch objects."""
+        if depth > 8:
+            return
+        for v in values:
+            if isinstance(v, LObj):
+                if v.qual == "launch.substitutions.LaunchConfiguration":
+                    name = v.arg(0, "variable_name")
+                    if isinstance(name, str):
+                        self.escaped.add(str(name))
+                        continue
+                self.escape([*v.args, *v.kwargs.values()], depth + 1)
+            elif isinstance(v, (list, tuple)):
+                self.escape(v, depth + 1)
+            elif isinstance(v, dict):
+                self.escape([*v.keys(), *v.values()], depth + 1)
 
     def register(self, obj: Any, spans: Any) -> Any:
         self.containers[id(obj)] = (obj, spans)

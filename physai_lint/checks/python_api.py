@@ -80,6 +80,26 @@ def concatenation(ctx: CheckContext) -> Iterator[Diagnostic]:
                 key=f"{fact.how}:{fact.detail}")
 
 
+@rule("L011", "substitution-tested-in-python")
+def substitution_tested(ctx: CheckContext) -> Iterator[Diagnostic]:
+    for _path, facts in python_facts(ctx):
+        for fact in facts.tested:
+            if fact.how == "truth":
+                message = (f"{fact.detail} is tested as a Python bool while the launch description is "
+                           "built: a substitution is an object, and every object is true, so the launch "
+                           "argument never decides this")
+            else:
+                always = "false" if fact.how == "equals" else "true"
+                message = (f"{fact.detail} compares the substitution object, not the value it names: it "
+                           f"is always {always} while the launch description is built")
+            yield Diagnostic(
+                "L011", fact.span, message,
+                help="decide when the launch runs: give the actions condition=IfCondition(...) or "
+                     "LaunchConfigurationEquals(...), or read the value with .perform(context) in an "
+                     "OpaqueFunction",
+                key=f"{fact.how}:{fact.detail}")
+
+
 @rule("L008", "wrong-argument-type")
 def wrong_argument_type(ctx: CheckContext) -> Iterator[Diagnostic]:
     for _path, facts in python_facts(ctx):

@@ -348,7 +348,8 @@ class ConcatFact:
     """A substitution joined at description time: ``'a' + LaunchConfiguration('x')``,
     ``os.path.join(FindPackageShare('p'), 'x')``, f-string of a substitution (``how``)."""
 
-    how: Literal["plus", "os.path.join", "f-string", "format", "percent", "str"]
+    how: Literal["plus", "os.path.join", "f-string", "format", "percent", "str",
+                 "truth", "equals", "not-equals"]
     span: Span
     detail: str
 
@@ -365,6 +366,9 @@ class PythonFacts:
     # Launch configurations (by name) handed to code the linter cannot follow (MoveItConfigsBuilder,
     # an unknown helper): it may read them, so they are never reported unused.
     escaped: tuple[str, ...] = ()
+    # A substitution tested as a Python value while the description is built: ``if lc:`` (always
+    # true), ``lc == 'true'`` (always false). ``how`` is "truth", "equals" or "not-equals".
+    tested: tuple[ConcatFact, ...] = ()
 
 
 @dataclass(frozen=True, slots=True)

@@ -112,7 +112,8 @@ def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | N
     is_test = any(isinstance(n, (ast.FunctionDef, ast.AsyncFunctionDef)) and n.name == "generate_test_description"
                   for n in tree.body)
     wrong = tuple(sorted(ev.wrong_types.values(), key=lambda f: (f.span.line, f.span.col, f.call)))
-    facts = PythonFacts(calls, names, concats, has_gld, is_test, wrong, tuple(sorted(ev.escaped)))
+    tested = tuple(sorted(ev.tests.values(), key=lambda c: (c.span.line, c.span.col, c.how)))
+    facts = PythonFacts(calls, names, concats, has_gld, is_test, wrong, tuple(sorted(ev.escaped)), tested)
     launch = LaunchFile(path, "python", actions, python=facts, read_files=tuple(ev.read_files))
     convert_values.set_recorder(None)
     return FrontendResult(launch=launch, diagnostics=[])

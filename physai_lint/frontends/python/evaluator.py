@@ -168,7 +168,7 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
         scope.nonlocal_decl.update(s.names)
 
     def st_Assert(self, s: ast.Assert, scope: Scope) -> None:
-        if truth(self.ev(s.test, scope)) is False:
+        if self.tested(self.ev(s.test, scope), s.test, scope) is False:
             raise Raise()  # AssertionError; an unknown test may pass
 
     def st_Delete(self, s: ast.Delete, scope: Scope) -> None:
@@ -201,7 +201,7 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
 
     def st_If(self, s: ast.If, scope: Scope) -> None:
         test = self.ev(s.test, scope)
-        t = truth(test)
+        t = self.tested(test, s.test, scope)
         if t is True:
             self.exec_block(s.body, scope)
         elif t is False:
@@ -230,7 +230,7 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
 
     def st_While(self, s: ast.While, scope: Scope) -> None:
         for _ in range(MAX_LOOP):
-            t = truth(self.ev(s.test, scope))
+            t = self.tested(self.ev(s.test, scope), s.test, scope)
             if t is None:
                 self.branch_both(Opaque("loop condition cannot be evaluated statically"), s.body, [], s, scope)
                 return
@@ -274,6 +274,13 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
             self.exec_block(s.finalbody, scope)
 
     st_TryStar = st_Try
+
+    def tested(self, v: Any, node: ast.AST, scope: Scope) -> bool | None:
+        """``truth(v)`` of a value Python tests as a bool here, noting a substitution object
+        (always true: the argument it names decides nothing)."""
+        if symbolic.is_subst(v):
+            self.substitution_tested("truth", self.span(node, scope), v)
+        return truth(v)
 
     # ---- branches over values only known at launch time -------------------------------------
     def branch_both(self, test: Any, body: list[ast.stmt], orelse: list[ast.stmt], node: ast.AST,

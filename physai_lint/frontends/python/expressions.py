@@ -121,7 +121,7 @@ class ExpressionsMixin:
         if isinstance(n.op, ast.Not):
             if isinstance(v, SymBool):
                 return SymBool(v.value, not v.negated)
-            t = truth(v)
+            t = self.tested(v, n.operand, scope)
             return Opaque("negation of an unknown value") if t is None else (not t)
         if isinstance(v, (int, float)) and not isinstance(v, Opaque):
             ops = {ast.USub: operator.neg, ast.UAdd: operator.pos, ast.Invert: operator.invert}
@@ -132,12 +132,12 @@ class ExpressionsMixin:
         is_and = isinstance(n.op, ast.And)
         syms: list[SymBool] = []
         last: Any = None
-        for e in n.values:
+        for k, e in enumerate(n.values):
             last = self.ev(e, scope)
             if isinstance(last, SymBool):
                 syms.append(last)
                 continue
-            t = truth(last)
+            t = self.tested(last, e, scope) if k < len(n.values) - 1 else truth(last)  # the last is not tested
             if t is None:
                 return Opaque("boolean operation on an unknown value", self.span(n, scope))
             if t is not is_and:
@@ -151,6 +151,18 @@ class ExpressionsMixin:
         result: Any = True
         for op, comp in zip(n.ops, n.comparators):
             right = self.ev(comp, scope)
+            if isinstance(op, (ast.Eq, ast.NotEq)) and (symbolic.is_subst(left) or symbolic.is_subst(right)):
+                # a substitution object has no __eq__: Python compares identities, whatever it names
+                subst, other = (left, right) if symbolic.is_subst(left) else (right, left)
+                self.substitution_tested("equals" if isinstance(op, ast.Eq) else "not-equals",
+                                         self.span(n, scope), subst, other)
+                r: Any = (left is right) == isinstance(op, ast.Eq)
+                if len(n.ops) == 1:
+                    return r
+                if r is not True:
+                    return r
+                left = right
+                continue
             r = symbolic.compare(op, left, right, self.span(n, scope))
             if r is None and isinstance(right, Ref) and right.qual == "os.environ" and isinstance(op, (ast.In, ast.NotIn)):
                 known = isinstance(left, str) and left in self.env
@@ -176,7 +188,7 @@ class ExpressionsMixin:
 
     def ex_IfExp(self, n: ast.IfExp, scope: Scope) -> Any:
         test = self.ev(n.test, scope)
-        t = truth(test)
+        t = self.tested(test, n.test, scope)
         if t is None:
             return symbolic.if_else(self, test, self.ev(n.body, scope), self.ev(n.orelse, scope), self.span(n, scope))
         return self.ev(n.body if t else n.orelse, scope)
@@ -286,7 +298,7 @@ class ExpressionsMixin:
                 self.assign(g.target, item, inner)
                 ok = True
                 for cond in g.ifs:
-                    t = truth(self.ev(cond, inner))
+                    t = self.tested(self.ev(cond, inner), cond, inner)
                     if t is None:
                         return False
                     ok = ok and t

@@ -11,7 +11,7 @@ import ast
 from typing import TYPE_CHECKING, Any
 
 from . import classes, symbolic
-from .core import Scope, is_concrete, truth
+from .core import Scope, is_concrete
 from .runtime import ClassValue, Instance, Opaque, Ref, SymBool, SymStr
 
 if TYPE_CHECKING:
@@ -59,7 +59,7 @@ def run_cases(ev: Evaluator, subject: Any, cases: list[ast.match_case], scope: S
                 ev.exec_block(case.body, scope)
                 return
             test = ev.ev(case.guard, scope)
-            t = truth(test)
+            t = ev.tested(test, case.guard, scope)
             if t is True:
                 ev.exec_block(case.body, scope)
                 return

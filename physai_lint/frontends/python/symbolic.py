@@ -32,6 +32,7 @@ class Recorder:
         # Launch configurations handed to code the evaluator cannot follow (a library's builder,
         # an unknown function): that code may read them.
         self.escaped: set[str] = set()
+        self.tests: dict[tuple[str, Span], ConcatFact] = {}
 
     def escape(self, values: Any, depth: int = 0) -> None:
         """Note the launch configurations (by literal name) in ``values``: arguments of a call the
@@ -63,6 +64,17 @@ class Recorder:
         key = (how, span)
         if key not in self.concats:
             self.concats[key] = ConcatFact(how, span, detail)  # type: ignore[arg-type]
+
+    def substitution_tested(self, how: str, span: Span, subst: Any, other: Any = None) -> None:
+        """A substitution object tested as a Python value (``if lc:``, ``lc == 'true'``)."""
+        key = (how, span)
+        if key in self.tests:
+            return
+        shown = shown_subst(subst)
+        if how != "truth":
+            shown += (" == " if how == "equals" else " != ") + \
+                (f'"{other}"' if isinstance(other, str) else shown_subst(other) if is_subst(other) else "...")
+        self.tests[key] = ConcatFact(how, span, shown)  # type: ignore[arg-type]
 
     def wrong_type(self, kind: str, call: str, value: Any, span: Span) -> None:
         key = (call, span)
@@ -103,6 +115,12 @@ def is_symstr(v: Any) -> bool:
 
 def is_textlike(v: Any) -> bool:
     return isinstance(v, (str, SymStr)) or is_subst(v)
+
+
+def shown_subst(v: Any) -> str:
+    """``LaunchConfiguration("x")`` for a configuration with a literal name, else the class name."""
+    name = v.arg(0, "variable_name") if isinstance(v, LObj) and v.qual.endswith(".LaunchConfiguration") else None
+    return f'LaunchConfiguration("{name}")' if isinstance(name, str) else _subst_name(v)
 
 
 def _subst_name(v: Any) -> str:

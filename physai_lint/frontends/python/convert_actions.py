@@ -88,11 +88,14 @@ class ActionBuilder:
         base = f"{prefix}{obj.span.line}:{obj.span.col}"
         return f"{base}#{obj.index}" if self.ev.site_counts.get(site, 1) > 1 else base
 
-    def _opaque(self, reason: str, span: Span) -> L.OpaqueAction:
-        base = f"opaque@{span.line}:{span.col}"
+    def _unique_id(self, base: str) -> str:
+        """``base``, or ``base#n`` for its n-th use in this file."""
         n = self.opaque_ids.get(base, 0) + 1
         self.opaque_ids[base] = n
-        return L.OpaqueAction(base if n == 1 else f"{base}#{n}", span, None, reason)
+        return base if n == 1 else f"{base}#{n}"
+
+    def _opaque(self, reason: str, span: Span) -> L.OpaqueAction:
+        return L.OpaqueAction(self._unique_id(f"opaque@{span.line}:{span.col}"), span, None, reason)
 
     def actions(self, entities: Any, span: Span) -> tuple[L.Action, ...]:
         if isinstance(entities, (list, tuple)):
@@ -133,10 +136,8 @@ class ActionBuilder:
         if not inner:
             return []
         c = tag.condition
-        base = f"{inner[0].id}/{c.raw}@{c.span.line}:{c.span.col}"
-        n = self.opaque_ids.get(base, 0) + 1
-        self.opaque_ids[base] = n
-        return [L.Group(base if n == 1 else f"{base}#{n}", c.span, c, tuple(inner), scoped=False)]
+        gid = self._unique_id(f"{inner[0].id}/{c.raw}@{c.span.line}:{c.span.col}")
+        return [L.Group(gid, c.span, c, tuple(inner), scoped=False)]
 
     def _new_tags(self, obj: LObj) -> list[CondTag]:
         """The branches ``obj`` was made under that no enclosing action carries already."""

@@ -151,19 +151,15 @@ class ExpressionsMixin:
         result: Any = True
         for op, comp in zip(n.ops, n.comparators):
             right = self.ev(comp, scope)
+            r: Any
             if isinstance(op, (ast.Eq, ast.NotEq)) and (symbolic.is_subst(left) or symbolic.is_subst(right)):
                 # a substitution object has no __eq__: Python compares identities, whatever it names
                 subst, other = (left, right) if symbolic.is_subst(left) else (right, left)
                 self.substitution_tested("equals" if isinstance(op, ast.Eq) else "not-equals",
                                          self.span(n, scope), subst, other)
-                r: Any = (left is right) == isinstance(op, ast.Eq)
-                if len(n.ops) == 1:
-                    return r
-                if r is not True:
-                    return r
-                left = right
-                continue
-            r = symbolic.compare(op, left, right, self.span(n, scope))
+                r = (left is right) == isinstance(op, ast.Eq)
+            else:
+                r = symbolic.compare(op, left, right, self.span(n, scope))
             if r is None and isinstance(right, Ref) and right.qual == "os.environ" and isinstance(op, (ast.In, ast.NotIn)):
                 known = isinstance(left, str) and left in self.env
                 r = (isinstance(op, ast.In)) if known else Opaque("depends on the environment", self.span(n, scope))

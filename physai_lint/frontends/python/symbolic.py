@@ -184,7 +184,7 @@ def compare(op: ast.cmpop, left: Any, right: Any, span: Span) -> SymBool | None:
     if not isinstance(op, (ast.Eq, ast.NotEq)):
         return None
     sides = (left, right)
-    if not any(isinstance(s, SymStr) or is_subst(s) for s in sides):
+    if not any(isinstance(s, SymStr) for s in sides):  # a substitution object: identity (ex_Compare)
         return None
     conv = []
     for s in sides:

@@ -11,10 +11,11 @@ from string literals or constants defined in the same file.
 """
 from __future__ import annotations
 
+import bisect
 import dataclasses
 import functools
 import re
-from typing import Any, NamedTuple
+from typing import Any, NamedTuple, Protocol
 
 from physai_lint.model.span import Span
 
@@ -72,8 +73,10 @@ _SIMPLE_KIND = (None, "id", "op", None, None, None, None, None, None, None, "id"
 _new = tuple.__new__  # Tok(...) without NamedTuple's Python-level __new__: a third of tokenizing
 
 
-def tokenize(text: str) -> list[Tok]:
-    """Tokens of a C++ source (its first ``MAX_SOURCE`` characters).
+def tokenize(text: str, start: int = 0, end: int | None = None, line: int = 1,
+             line_start: int = 0) -> list[Tok]:
+    """Tokens of a C++ source (its first ``MAX_SOURCE`` characters), or of ``text[start:end]``
+    where ``start`` is a token boundary on line ``line``, which begins at offset ``line_start``.
 
     One compiled regex does the common tokens; ``_step`` (the per-character loop this replaced,
     one token at a time) does the rare ones: preprocessor lines, raw strings, non-ASCII, an
@@ -81,19 +84,18 @@ def tokenize(text: str) -> list[Tok]:
     looked past the cut). Lines are counted as that loop counted them: a newline inside a char
     literal, or ending one, is not counted."""
     toks: list[Tok] = []
-    n = len(text)
-    line, line_start = 1, 0
-    if n > MAX_SOURCE:
+    n = len(text) if end is None else end
+    if end is None and n > MAX_SOURCE:
         n, i = MAX_SOURCE, 0
         while i < n:
             i, line, line_start = _step(text, i, n, line, line_start, toks)
         return toks
     append, new, tok, simple = toks.append, _new, Tok, _SIMPLE_KIND
     finditer, count, rfind = _SCAN.finditer, text.count, text.rfind
-    i = 0
+    i = start
     while i < n:
         ls1 = line_start - 1  # col = offset - ls1
-        for m in finditer(text, i):
+        for m in finditer(text, i, n):
             k: int = m.lastindex  # type: ignore[assignment]  # every alternative is a group
             kind = simple[k]
             if kind:  # identifier, operator, number
@@ -289,6 +291,12 @@ def _unescape(s: str) -> str:
 _CLOSE = {"(": ")", "[": "]", "{": "}", "<": ">"}
 
 
+class _Constants(Protocol):
+    """A file's string constants by name (a dict, or ``_LazyConstants``)."""
+
+    def get(self, name: str, /) -> str | None: ...
+
+
 def _template_args(toks: list[Tok], i: int) -> tuple[str | None, int]:
     """``toks[i]`` is ``<``: return (joined text of the args, index after ``>``)."""
     depth = 0
@@ -349,29 +357,19 @@ def _constants(toks: list[Tok]) -> dict[str, str]:
     """``NAME = "literal";`` / ``NAME[] = "literal";`` / ``NAME{"literal"}`` / ``#define``."""
     out: dict[str, str] = {}
     for j in [j for j, t in enumerate(toks) if t[0] == "str"]:
-        t = toks[j]
         if j < 2:
             continue
-        nxt = toks[j + 1].text if j + 1 < len(toks) else ";"
-        if nxt not in (";", "}", ")"):
+        k = _constant_name_at(toks, j)
+        if k is None:
             continue
-        k = j - 1
-        if toks[k].text in ("=", "{", "("):
-            k -= 1
-        if toks[k].text in ("#define",):
-            continue
-        if toks[k].kind == "op" and toks[k].text == "]":
-            k -= 2 if toks[k - 1].text == "[" else 3
         if toks[j - 1].kind == "id" and toks[j - 2].text == "#define":
-            out[toks[j - 1].text] = t.text
-            continue
-        if k >= 0 and toks[k].kind == "id" and toks[k].text not in ("return", "std", "string"):
-            name = toks[k].text
-            out.setdefault(name, t.text)
+            out[toks[j - 1].text] = toks[j].text  # the last #define wins
+        elif _is_constant_name(toks, k):
+            out.setdefault(toks[k].text, toks[j].text)  # the first definition wins
     return out
 
 
-def _name_of(arg: list[Tok], consts: dict[str, str]) -> tuple[str | None, Tok | None]:
+def _name_of(arg: list[Tok], consts: _Constants) -> tuple[str | None, Tok | None]:
     arg = [t for t in arg]
     # std::string("x") / std::string{"x"} / rclcpp::ParameterValue? no
     strs = [t for t in arg if t.kind == "str"]
@@ -383,8 +381,9 @@ def _name_of(arg: list[Tok], consts: dict[str, str]) -> tuple[str | None, Tok | 
     ids = [t for t in arg if t.kind == "id"]
     if ids and all(t.kind == "id" or t.text in ("::", "this", "->", ".") for t in arg):
         last = ids[-1]
-        if last.text in consts:
-            return consts[last.text], last
+        value = consts.get(last.text)
+        if value is not None:
+            return value, last
     return None, None
 
 
@@ -529,12 +528,16 @@ def _span(path: str, t: Tok | None) -> Span | None:
 
 def _read_only_descriptors(toks: list[Tok]) -> set[str]:
     """Variables given ``NAME.read_only = true`` (or ``->``) in the file."""
-    out: set[str] = set()
-    for j in [j for j, t in enumerate(toks) if t[1] == "read_only" and 2 <= j < len(toks) - 2]:
-        if toks[j - 1].text in (".", "->") and \
-                toks[j + 1].text == "=" and toks[j + 2].text == "true" and toks[j - 2].kind == "id":
-            out.add(toks[j - 2].text)
-    return out
+    names = (_read_only_at(toks, j) for j, t in enumerate(toks) if t[1] == "read_only")
+    return {name for name in names if name is not None}
+
+
+def _read_only_at(toks: list[Tok], j: int) -> str | None:
+    """The variable ``toks[j]`` (a ``read_only``) is in ``NAME.read_only = true``, if it is."""
+    if 2 <= j < len(toks) - 2 and toks[j - 1].text in (".", "->") and toks[j + 1].text == "=" \
+            and toks[j + 2].text == "true" and toks[j - 2].kind == "id":
+        return toks[j - 2].text
+    return None
 
 
 def _descriptor_read_only(arg: list[Tok], names: set[str]) -> bool:
@@ -548,14 +551,6 @@ def _descriptor_read_only(arg: list[Tok], names: set[str]) -> bool:
         if arg[j].text == "read_only" and arg[j + 1].text == "=" and arg[j + 2].text == "true":
             return True
     return False
-
-
-@functools.lru_cache(maxsize=256)
-def _tokens(text: str) -> list[Tok]:
-    """``tokenize`` memoised (callers only read the list): a package's executables share sources,
-    and the same file was tokenized once per executable (601 distinct files, 2,130 calls, half of
-    a run's time on the real-world corpus)."""
-    return tokenize(text)
 
 
 # Every call _extract_one looks for names one of these; a file without any has nothing to give
@@ -575,17 +570,321 @@ _LOOP_NAMES = frozenset(_TF_ENDPOINTS) | frozenset(_ENDPOINT_CALLS) | {
     "declare_parameter", "declare_parameter_if_not_declared", "declare_or_get_parameter"}
 
 
+# ---- where the tokens come from ------------------------------------------------------------------
+# Extraction reads only a few tokens around each call word (the two before it, and up to the ";"
+# that ends its statement), the file's string constants and its ``X.read_only = true`` lines. A
+# "skim" (one regex for comments, strings, chars and preprocessor lines, a tenth of tokenizing)
+# finds the parts of the file that are not code; only the statements around the words extraction
+# acts on are then tokenized. A file whose skim meets something the tokenizer reads in its own
+# way (an unterminated char literal, whose newline it does not count; a raw string without a
+# delimiter; a file past MAX_SOURCE) is tokenized whole, as before.
+
+_IDCHARS = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz_0123456789")
+_SKIM = re.compile(r"//[^\n]*"
+                   r"|/\*(?:[^*]*\*+(?:[^/*][^*]*\*+)*/|[\s\S]*)"
+                   r'|"(?:[^"\\\n]+|\\[\s\S]?)*["\n]?'
+                   r"|'(?:[^'\\\n]+|\\[\s\S]?)*['\n]?"
+                   r"|\#")
+_RAW_PREFIXES = frozenset(("R", "u8R", "uR", "UR", "LR"))
+# a part of every word an anchor can be (_LOOP_NAMES and read_only); the identifier around it
+# decides. (No look-around, nor optional prefixes: either costs the regex its fast scan for the
+# first character, three times the time.)
+_ANCHOR = re.compile(r"create_(?:publisher|subscription|service|client|server)|advertise|subscribe"
+                     r"|declare_(?:parameter|or_get_parameter)|Transform(?:Listener|Broadcaster)"
+                     r"|read_only")
+_ANCHOR_WORDS = _LOOP_NAMES | {"read_only"}
+
+
+_DIGITS = frozenset("0123456789")
+
+
+def _run_start(text: str, p: int) -> int | None:
+    """The start of the run of identifier characters that ends at offset ``p``; None when a number
+    before it may reach into it (``1'0x``, ``1.e5x``, ``1.fx``): how the tokenizer splits such a
+    run depends on what precedes it. (A run that starts with a digit is a number, which callers
+    judge; only digits can follow an exponent's sign.)"""
+    j = p
+    while j and text[j - 1] in _IDCHARS:
+        j -= 1
+    if j < p and j >= 2:
+        before, before2 = text[j - 1], text[j - 2]
+        if before == "'" and before2 in _IDCHARS:
+            return None
+        if before == "." and before2 in _DIGITS and text[j] in "eEuUlLfF":
+            return None
+    return j
+
+
+class _Whole:
+    """Every token of the file (the fallback, and the reference the windows are tested against)."""
+
+    def __init__(self, text: str) -> None:
+        self.toks = tokenize(text)
+
+    def anchors(self) -> list[tuple[list[Tok], int]]:
+        toks = self.toks
+        # only the identifiers extraction acts on (a comprehension over the list, not a loop)
+        return [(toks, i) for i, t in enumerate(toks) if t[1] in _LOOP_NAMES and t[0] == "id"]
+
+    def constants(self) -> dict[str, str]:
+        return _constants(self.toks)
+
+    def read_only(self) -> set[str]:
+        return _read_only_descriptors(self.toks)
+
+
+class _Windows:
+    """The tokens of the statements around the file's anchors, from a skim of the whole text."""
+
+    def __init__(self, text: str, starts: list[int], ends: list[int], defines: list[tuple[str, str]],
+                 words: list[tuple[int, str]]) -> None:
+        self.text, self.starts, self.ends, self.defines = text, starts, ends, defines
+        self.words = words  # (offset, word) of each anchor outside comments, strings...
+        self._at, self._line = 0, 1  # _line_of's cursor
+
+    @classmethod
+    def of(cls, text: str) -> _Windows | None:
+        """The skim of ``text``; None when the file must be tokenized whole."""
+        if len(text) > MAX_SOURCE:
+            return None
+        starts: list[int] = []
+        ends: list[int] = []
+        defines: list[tuple[str, str]] = []
+        search, n, pos = _SKIM.search, len(text), 0
+        while True:
+            m = search(text, pos)
+            if m is None:
+                break
+            s, e = m.span()
+            c = text[s]
+            if c == "'":
+                if s and text[s - 1] in _IDCHARS:
+                    j = _run_start(text, s)
+                    if j is None or text[j - 1:j] == ".":
+                        return None  # (".5'": the number may start at the "." or before it)
+                    if text[j] in _DIGITS:  # a digit separator, inside a number
+                        num = _NUM.match(text, j)
+                        if num and num.end() > s:
+                            pos = num.end()
+                            continue
+                if e == n or text[e - 1] != "'" or e - s < 2 or text.find("\n", s, e) >= 0:
+                    return None  # a newline in it, or unterminated: the tokenizer does not count
+                    # that newline (nor a char at the very end, read by its slow path)
+            elif c == '"':
+                j = _run_start(text, s)
+                if j is None or (j < s and text[j] in _DIGITS):
+                    return None  # a number may run into the prefix
+                if text[j:s] in _RAW_PREFIXES:
+                    delim = _RAW_DELIM.match(text, s, s + 20)
+                    if not delim:
+                        return None
+                    close = ")" + delim.group(1) + '"'
+                    k = text.find(close, delim.end())
+                    s, e = j, (n if k < 0 else k + len(close))
+            elif c == "#":
+                line_start = text.rfind("\n", 0, s) + 1
+                if text[line_start:s].strip():
+                    pos = s + 1  # an operator, not a preprocessor line
+                    continue
+                e = s
+                while True:  # to the newline that no backslash continues
+                    k = text.find("\n", e)
+                    if k < 0:
+                        e = n
+                        break
+                    if text[k - 1:k] == "\\":
+                        e = k + 1
+                        continue
+                    e = k
+                    break
+                d = _DEFINE.match(text[s:e])
+                if d:
+                    defines.append((d.group(1), _unescape(d.group(2))))
+            starts.append(s)
+            ends.append(e)
+            pos = e
+        view = cls(text, starts, ends, defines, [])
+        last = -1
+        for m in _ANCHOR.finditer(text):
+            p = _run_start(text, m.start())
+            if p is None or (p < m.start() and text[p] in _DIGITS):
+                return None  # a number may run into it
+            word = text[p:_ID.match(text, m.end()).end()]  # type: ignore[union-attr]
+            if p > last and word in _ANCHOR_WORDS and not view._inside(p):
+                view.words.append((p, word))
+                last = p
+        return view
+
+    def _inside(self, p: int) -> bool:
+        """Whether offset ``p`` is in a comment, string, char or preprocessor line."""
+        k = bisect.bisect_right(self.starts, p) - 1
+        return k >= 0 and p < self.ends[k]
+
+    def _first_token(self, p: int) -> bool:
+        """Whether no token comes before offset ``p``: only blanks, comments and preprocessor
+        lines other than a ``#define`` of a literal."""
+        text, starts, pos = self.text, self.starts, 0
+        while True:
+            while pos < p and text[pos] in " \t\r\f\v\\\n":
+                pos += 1
+            if pos >= p:
+                return True
+            k = bisect.bisect_left(starts, pos)
+            if k == len(starts) or starts[k] != pos or text[pos] not in "/#" \
+                    or _DEFINE.match(text, pos, self.ends[k]):
+                return False
+            pos = self.ends[k]
+
+    def _line_of(self, p: int) -> int:
+        """The line of offset ``p``, counted from the last one asked (they mostly increase)."""
+        text, at = self.text, self._at
+        self._line += text.count("\n", at, p) if p >= at else -text.count("\n", p, at)
+        self._at = p
+        return self._line
+
+    def _line_start(self, p: int) -> int:
+        """The start of the line holding offset ``p``, moved up past any comment, string or
+        preprocessor line that spans it (a line start outside them is a token boundary)."""
+        text = self.text
+        ls = text.rfind("\n", 0, p) + 1
+        while ls:
+            k = bisect.bisect_right(self.starts, ls) - 1
+            if k < 0 or not self.starts[k] < ls < self.ends[k]:
+                return ls
+            ls = text.rfind("\n", 0, self.starts[k]) + 1
+        return ls
+
+    def _statement_end(self, p: int) -> int:
+        """Just after the first ";" token from ``p``, or the end of the text: extraction never
+        reads past it (``_call_args`` and ``_template_args`` stop there)."""
+        text = self.text
+        k = text.find(";", p)
+        while k >= 0 and self._inside(k):
+            k = text.find(";", self.ends[bisect.bisect_right(self.starts, k) - 1])
+        return len(self.text) if k < 0 else k + 1
+
+    def _window(self, p: int, name: str) -> tuple[list[Tok], int] | None:
+        """The tokens from a line start with at least two tokens before offset ``p`` to the end
+        of its statement, and the index of the token at ``p``."""
+        end = self._statement_end(p)
+        ls = self._line_start(p)
+        for _ in range(8):  # a line back at a time, while fewer than two tokens come before
+            line = self._line_of(ls)
+            toks = tokenize(self.text, ls, end, line, ls)
+            at_line, at_col = self._line_of(p), p - self.text.rfind("\n", 0, p)
+            i = next((i for i, t in enumerate(toks) if t[2] == at_line and t[3] == at_col), -1)
+            if i < 0 or toks[i][1] != name:
+                return None  # the tokenizer reads the line otherwise: leave it
+            if i >= 2 or ls == 0:
+                break
+            ls = self._line_start(ls - 1)
+        return toks, i
+
+    def anchors(self) -> list[tuple[list[Tok], int]]:
+        out = []
+        for p, name in self.words:
+            if name != "read_only":
+                win = self._window(p, name)
+                if win is not None:
+                    out.append(win)
+        return out
+
+    def constants(self) -> _LazyConstants:
+        return _LazyConstants(self)
+
+    def read_only(self) -> set[str]:
+        out: set[str] = set()
+        for p, name in self.words:
+            if name == "read_only":
+                win = self._window(p, name)
+                variable = _read_only_at(*win) if win is not None else None
+                if variable is not None:
+                    out.add(variable)
+        return out
+
+
+class _LazyConstants:
+    """``_constants`` of a skimmed file, one name at a time (extraction asks about a few)."""
+
+    def __init__(self, view: _Windows) -> None:
+        self.view = view
+        self.memo: dict[str, str | None] = {}
+        self.whole: dict[str, str] | None = None  # _constants of every token, when in doubt
+
+    def _every_token(self) -> dict[str, str]:
+        if self.whole is None:
+            self.whole = _constants(tokenize(self.view.text))
+        return self.whole
+
+    def get(self, name: str) -> str | None:
+        if name not in self.memo:
+            self.memo[name] = self._find(name)
+        return self.memo[name]
+
+    def _find(self, name: str) -> str | None:
+        view = self.view
+        defined = [lit for n, lit in view.defines if n == name]
+        if defined:  # a #define wins over any definition, the last one over the others
+            return defined[-1]
+        if name in ("return", "std", "string"):
+            return None
+        text = view.text
+        for m in re.finditer(re.escape(name), text):
+            p = m.start()
+            if m.end() < len(text) and text[m.end()] in _IDCHARS or view._inside(p):
+                continue
+            j = _run_start(text, p)
+            if j is None or (j < p and text[j] in _DIGITS):
+                return self._every_token().get(name)  # a number may run into it
+            if j < p:
+                continue  # a part of a longer name
+            ls = text.rfind("\n", 0, p) + 1
+            line, end = view._line_of(ls), view._statement_end(p)
+            toks = tokenize(text, p, end, line, ls)
+            while len(toks) < 8 and end < len(text):  # the name, up to 5 tokens, the literal, one
+                end = view._statement_end(end)
+                toks = tokenize(text, p, end, line, ls)
+            if not toks or toks[0][1] != name or toks[0][0] != "id":
+                continue
+            first = 2 if view._first_token(p) else 1  # (_constants skips a literal at 0 or 1)
+            for j in range(first, min(len(toks), 7)):
+                if toks[j][0] == "str" and _constant_name_at(toks, j) == 0:
+                    return toks[j][1]  # (toks[0] is the name: _is_constant_name holds)
+        return None
+
+
+def _constant_name_at(toks: list[Tok], j: int) -> int | None:
+    """Where the name is that the string literal ``toks[j]`` may define (``NAME = "x";``,
+    ``NAME[] = "x";``, ``NAME{"x"}``, ``NAME("x")``), before asking whether it is a name: None
+    when ``toks[j]`` cannot be such a definition."""
+    nxt = toks[j + 1].text if j + 1 < len(toks) else ";"
+    if nxt not in (";", "}", ")"):
+        return None
+    k = j - 1
+    if toks[k].text in ("=", "{", "("):
+        k -= 1
+    if toks[k].text == "#define":
+        return None
+    if toks[k].kind == "op" and toks[k].text == "]":
+        k -= 2 if toks[k - 1].text == "[" else 3
+    return k
+
+
+def _is_constant_name(toks: list[Tok], k: int) -> bool:
+    return k >= 0 and toks[k].kind == "id" and toks[k].text not in ("return", "std", "string")
+
+
 def _extract_one(path: str, text: str, iface: NodeInterface) -> None:
     if not _CALL_WORDS.search(text):
         return
-    toks = _tokens(text)
-    consts = _constants(toks)
-    read_only = _read_only_descriptors(toks)
-    # only the identifiers a branch below asks about (a comprehension over the list, not a loop)
-    for i in [i for i, t in enumerate(toks) if t[1] in _LOOP_NAMES]:
+    _extract_from(path, _Windows.of(text) or _Whole(text), iface)
+
+
+def _extract_from(path: str, view: _Whole | _Windows, iface: NodeInterface) -> None:
+    consts = view.constants()
+    read_only = view.read_only()
+    for toks, i in view.anchors():
         t = toks[i]
-        if t.kind != "id":
-            continue
         name = t.text
         prev = toks[i - 1].text if i > 0 else ""
         prev2 = toks[i - 2].text if i > 1 else ""

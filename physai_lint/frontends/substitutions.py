@@ -128,6 +128,9 @@ def parse_substitutions(
     ``positions`` (optional, ``len(text) + 1`` entries) maps each character to its source line/col
     when the value is not a verbatim copy of the source (XML entity references, folded YAML).
     """
+    if positions is None and text and "$" not in text and "\\" not in text and "\n" not in text:
+        # plain text on one line (most values): what the general path below makes of it
+        return (Text(text, Span(span.file, span.line, span.col, span.line, span.col + len(text))),), []
     pos = positions if positions is not None and len(positions) == len(text) + 1 \
         else positions_from(text, span.line, span.col)
     ctx = _Ctx(text, pos, span.file, [])

@@ -75,12 +75,15 @@ class _Reader:
         self.lines = _Lines(path, text)
         self.text = text
         self.data = text.encode("utf-8")
+        self.ascii = len(self.data) == len(text)  # then a byte index is a character offset
         self.byte_pos = 0
         self.char_pos = 0
         self.stack: list[Element] = []
         self.root: Element | None = None
 
     def char_offset(self, byte_index: int) -> int:
+        if self.ascii and 0 <= byte_index <= len(self.data):
+            return byte_index
         if byte_index < self.byte_pos:
             self.byte_pos = self.char_pos = 0
         self.char_pos += len(self.data[self.byte_pos:byte_index].decode("utf-8", "replace"))

@@ -30,6 +30,16 @@ def test_plain_text_is_one_text_part() -> None:
     assert value == (Text("hello world", Span(F, 1, 1, 1, 12)),) and diags == []
 
 
+@pytest.mark.parametrize("text", ["a", "hello world", "  padded  ", "tab\there", "ünïcode", "(x)", "'q'"])
+def test_plain_one_line_text_is_what_the_general_path_makes(text: str) -> None:
+    # a value without "$", "\\" or a newline takes a short cut; given its positions explicitly,
+    # the same value goes the general way
+    from physai_lint.frontends.substitutions import positions_from
+
+    span = Span(F, 3, 7, 3, 7 + len(text))
+    assert parse_substitutions(text, span) == parse_substitutions(text, span, positions_from(text, 3, 7))
+
+
 def test_empty_value() -> None:
     value, diags = parse("")
     assert literal_of(value) == "" and diags == []

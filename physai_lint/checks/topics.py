@@ -9,6 +9,7 @@ from typing import Any
 from physai_lint.checks._util import all_nodes, where
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.graph.system import Endpoint, SystemGraph, build_graph, remap_target, similar
+from physai_lint.interfaces.model import LIFECYCLE_ENDPOINTS
 from physai_lint.model.findings import Diagnostic, Related
 from physai_lint.model.values import literal_of
 from physai_lint.resolve.model import EffRemap, NodeInstance
@@ -223,6 +224,9 @@ T202_IGNORE_TOPICS = ("/rosout", "/parameter_events", "/tf", "/tf_static", "/dia
                       "/robot_description")
 
 
+_LIFECYCLE_SERVICES = frozenset(name for kind, name, _ in LIFECYCLE_ENDPOINTS if kind == "services")
+
+
 def _valid(topic: str) -> bool:
     from physai_lint.resolve.names import validate_full_topic_name
 
@@ -255,6 +259,8 @@ def _dangling(ctx: CheckContext, mine: str, other: str, code: str) -> Iterator[D
         for e in g.of_kind(mine):  # type: ignore[arg-type]
             if e.resolved is None or e.resolved in others or e.resolved.split("/")[-1].startswith("_"):
                 continue
+            if g.unnamed_lifecycle and e.resolved.endswith("/transition_event"):
+                continue  # a lifecycle node of unknown name publishes one: maybe this one
             if not _valid(e.resolved):
                 continue  # N104 reports the name itself; no node could ever match it
             if e.resolved in _IMPLICIT_TOPICS or any(fnmatchcase(e.resolved, p) for p in ignore):
@@ -315,8 +321,10 @@ def duplicate_service(ctx: CheckContext) -> Iterator[Diagnostic]:
         for kind in ("service", "action_server"):
             first: dict[str, str] = {}
             for e in g.of_kind(kind):
-                if e.resolved is None:
-                    continue
+                if e.resolved is None or (kind == "service" and e.written in _LIFECYCLE_SERVICES):
+                    continue  # (every lifecycle node serves these: two only meet under one name)
+                if g.node(e.node).active is not True:
+                    continue  # as N101: a condition that cannot be evaluated often excludes the other
                 if e.resolved not in first:
                     first[e.resolved] = e.node
                     continue

@@ -11,6 +11,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, Literal
 
+from physai_lint.interfaces.model import LIFECYCLE_ENDPOINTS, add_lifecycle_endpoints
 from physai_lint.resolve.model import EffRemap, LaunchResult, NodeInstance
 from physai_lint.resolve.names import expand_topic_name
 
@@ -40,6 +41,9 @@ class SystemGraph:
     launch: LaunchResult
     endpoints: list[Endpoint] = field(default_factory=list)
     known: set[str] = field(default_factory=set)  # node ids whose interface is known
+    # a lifecycle node whose name is unknown: its own endpoints (``~/transition_event``...) are
+    # left out rather than unresolved, which would hide every dangling topic of the launch
+    unnamed_lifecycle: bool = False
     nx: Any = None
     _by_node: Any = field(default=None, init=False, repr=False, compare=False)
     _nodes: Any = field(default=None, init=False, repr=False, compare=False)
@@ -124,6 +128,8 @@ def build_graph(launch: LaunchResult, interfaces: Any, include_inactive: bool = 
         iface = interfaces.get(node.package, node.executable) if interfaces is not None else None
         if iface is None:
             continue
+        if node.kind == "lifecycle_node" or getattr(iface, "lifecycle", False):
+            iface = _as_lifecycle(iface)  # launched as one, or its code makes one
         g.known.add(node.id)
         for kind in KINDS:
             for ep in getattr(iface, _ATTR[kind], None) or ():
@@ -131,10 +137,31 @@ def build_graph(launch: LaunchResult, interfaces: Any, include_inactive: bool = 
                 if not isinstance(name, str):
                     continue
                 expanded = _expand(name, node)
+                if expanded is None and (_ATTR[kind], name) in _LIFECYCLE_KEYS:
+                    g.unnamed_lifecycle = True
+                    continue
                 resolved, idx = apply_remaps(expanded, node) if expanded else (None, None)
                 g.endpoints.append(Endpoint(node.id, kind, name, expanded, resolved,
                                             getattr(ep, "type", None), idx))
     return g
+
+
+_LIFECYCLE_KEYS = frozenset((kind, name) for kind, name, _ in LIFECYCLE_ENDPOINTS)
+
+
+def _as_lifecycle(iface: Any) -> Any:
+    """A copy of ``iface`` with the endpoints every lifecycle node has (the code may not show
+    them: a class derived from a project's own lifecycle base, or no source found)."""
+    import copy
+
+    if all(any(getattr(e, "name", None) == name for e in getattr(iface, kind, None) or ())
+           for kind, name, _ in LIFECYCLE_ENDPOINTS):
+        return iface
+    out = copy.copy(iface)
+    for kind, _, _ in LIFECYCLE_ENDPOINTS:
+        setattr(out, kind, list(getattr(iface, kind, None) or ()))
+    add_lifecycle_endpoints(out)
+    return out
 
 
 def to_networkx(g: SystemGraph) -> Any:

@@ -346,8 +346,8 @@ def _call_args(toks: list[Tok], i: int) -> tuple[list[list[Tok]], int] | None:
             args.append([])
             j += 1
             continue
-        elif t.kind == "op" and t.text == ";":
-            return None
+        elif t.kind == "op" and t.text == ";" and "{" not in stack:
+            return None  # (a ";" in braces is in a lambda's body: the call goes on)
         args[-1].append(t)
         j += 1
     return None
@@ -485,6 +485,7 @@ def extract_cpp(files: list[tuple[str, str]], cache: Any = None) -> NodeInterfac
         part = _file_interface(path, text, cache)
         for kind in ENDPOINT_KINDS:
             getattr(iface, kind).extend(getattr(part, kind))
+        iface.lifecycle = iface.lifecycle or part.lifecycle
         for name, decl in part.parameters.items():  # type: ignore[union-attr]
             mine = iface.parameters.setdefault(name, dataclasses.replace(decl))  # type: ignore[union-attr]
             if decl.read_only:  # a declaration in this file makes it read-only
@@ -556,7 +557,8 @@ def _descriptor_read_only(arg: list[Tok], names: set[str]) -> bool:
 # Every call _extract_one looks for names one of these; a file without any has nothing to give
 # (two thirds of the C++ files of a workspace), and tokenizing it is most of the cost.
 _CALL_WORDS = re.compile(r"create_(?:publisher|subscription|service|client|server)|advertise|subscribe"
-                         r"|declare_(?:parameter|or_get_parameter)|Transform(?:Listener|Broadcaster)")
+                         r"|declare_(?:parameter|or_get_parameter)|Transform(?:Listener|Broadcaster)"
+                         r"|LifecycleNode")
 _TF_ENDPOINTS = {
     "TransformListener": (("subscribers", "/tf"), ("subscribers", "/tf_static")),
     "TransformBroadcaster": (("publishers", "/tf"),),
@@ -567,7 +569,14 @@ _TF_ENDPOINTS = {
 # every name a branch of _extract_one's loop acts on
 _LOOP_NAMES = frozenset(_TF_ENDPOINTS) | frozenset(_ENDPOINT_CALLS) | {
     "create_server", "advertise", "subscribe", "advertiseCamera", "subscribeCamera",
-    "declare_parameter", "declare_parameter_if_not_declared", "declare_or_get_parameter"}
+    "declare_parameter", "declare_parameter_if_not_declared", "declare_or_get_parameter",
+    "LifecycleNode"}
+# The namespaces of the lifecycle node classes a node's class derives from (nav2's own wrapper:
+# nav2_util up to jazzy, nav2 after), and the tokens a base class or a constructor's initialiser
+# names one after, or ``make_shared<...>`` makes one with.
+_LIFECYCLE_NAMESPACES = frozenset({"rclcpp_lifecycle", "nav2_util", "nav2"})
+_BASE_BEFORE = frozenset({"public", "protected", "private", ":", ","})
+_BASE_AFTER = frozenset({"{", ",", "("})
 
 
 # ---- where the tokens come from ------------------------------------------------------------------
@@ -591,7 +600,7 @@ _RAW_PREFIXES = frozenset(("R", "u8R", "uR", "UR", "LR"))
 # first character, three times the time.)
 _ANCHOR = re.compile(r"create_(?:publisher|subscription|service|client|server)|advertise|subscribe"
                      r"|declare_(?:parameter|or_get_parameter)|Transform(?:Listener|Broadcaster)"
-                     r"|read_only")
+                     r"|read_only|LifecycleNode")
 _ANCHOR_WORDS = _LOOP_NAMES | {"read_only"}
 
 
@@ -660,8 +669,8 @@ class _Windows:
             if c == "'":
                 if s and text[s - 1] in _IDCHARS:
                     j = _run_start(text, s)
-                    if j is None or text[j - 1:j] == ".":
-                        return None  # (".5'": the number may start at the "." or before it)
+                    if j is None or (j and text[j - 1] in ".+-"):
+                        return None  # (".5'", "1e+5'": the number may start before the run)
                     if text[j] in _DIGITS:  # a digit separator, inside a number
                         num = _NUM.match(text, j)
                         if num and num.end() > s:
@@ -755,8 +764,7 @@ class _Windows:
         return ls
 
     def _statement_end(self, p: int) -> int:
-        """Just after the first ";" token from ``p``, or the end of the text: extraction never
-        reads past it (``_call_args`` and ``_template_args`` stop there)."""
+        """Just after the first ";" token from ``p``, or the end of the text."""
         text = self.text
         k = text.find(";", p)
         while k >= 0 and self._inside(k):
@@ -764,8 +772,10 @@ class _Windows:
         return len(self.text) if k < 0 else k + 1
 
     def _window(self, p: int, name: str) -> tuple[list[Tok], int] | None:
-        """The tokens from a line start with at least two tokens before offset ``p`` to the end
-        of its statement, and the index of the token at ``p``."""
+        """The tokens from a line start with at least two tokens (four before a
+        ``LifecycleNode``) before offset ``p`` to the end of its statement, and the index of the
+        token at ``p``."""
+        before = 4 if name == "LifecycleNode" else 2
         end = self._statement_end(p)
         ls = self._line_start(p)
         for _ in range(8):  # a line back at a time, while fewer than two tokens come before
@@ -775,9 +785,15 @@ class _Windows:
             i = next((i for i, t in enumerate(toks) if t[2] == at_line and t[3] == at_col), -1)
             if i < 0 or toks[i][1] != name:
                 return None  # the tokenizer reads the line otherwise: leave it
-            if i >= 2 or ls == 0:
+            if i >= before or ls == 0:
                 break
             ls = self._line_start(ls - 1)
+        # Extraction reads up to the ";" that ends the call: past a ";" inside braces opened
+        # after the word (a lambda's body), as ``_call_args`` does, up to its limit.
+        while end < len(self.text) and len(toks) < i + 4400 and _brace_open(toks, i):
+            start, end = end, self._statement_end(end)
+            ls = self.text.rfind("\n", 0, start) + 1
+            toks += tokenize(self.text, start, end, self._line_of(ls), ls)
         return toks, i
 
     def anchors(self) -> list[tuple[list[Tok], int]]:
@@ -853,6 +869,21 @@ class _LazyConstants:
         return None
 
 
+def _brace_open(toks: list[Tok], i: int) -> bool:
+    """Whether a "{" opened after ``toks[i]`` is still open at the end of ``toks`` (no bracket
+    opened before it closed first)."""
+    stack: list[str] = []
+    for t in toks[i + 1:]:
+        if t[0] == "op":
+            if t[1] in "([{":
+                stack.append(t[1])
+            elif t[1] in ")]}":
+                if not stack:
+                    return False
+                stack.pop()
+    return "{" in stack
+
+
 def _constant_name_at(toks: list[Tok], j: int) -> int | None:
     """Where the name is that the string literal ``toks[j]`` may define (``NAME = "x";``,
     ``NAME[] = "x";``, ``NAME{"x"}``, ``NAME("x")``), before asking whether it is a name: None
@@ -888,6 +919,13 @@ def _extract_from(path: str, view: _Whole | _Windows, iface: NodeInterface) -> N
         name = t.text
         prev = toks[i - 1].text if i > 0 else ""
         prev2 = toks[i - 2].text if i > 1 else ""
+        if name == "LifecycleNode":
+            if prev == "::" and prev2 in _LIFECYCLE_NAMESPACES and i + 1 < len(toks) and (
+                    (i > 2 and toks[i - 3].text in _BASE_BEFORE and toks[i + 1].text in _BASE_AFTER)
+                    or (i > 3 and toks[i - 3].text == "<" and toks[i - 4].text == "make_shared"
+                        and toks[i + 1].text == ">")):
+                iface.lifecycle = True  # a lifecycle node's class
+            continue
         if name in _TF_ENDPOINTS and prev == "::" and prev2 == "tf2_ros":
             # tf2_ros' listener subscribes to (and its broadcasters publish on) the absolute /tf and
             # /tf_static: nodes using them honour a ("/tf", "tf") remap like any other topic.

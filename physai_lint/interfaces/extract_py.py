@@ -1,10 +1,11 @@
 """Interfaces from rclpy sources, read with ``ast`` (never imported or run).
 
-Recognised: ``create_publisher(T, 'n', qos)``, ``create_subscription(T, 'n', cb, qos)``,
-``create_service(T, 'n', cb)``, ``create_client(T, 'n')``, ``ActionServer(node, T, 'n', ...)``,
-``ActionClient(node, T, 'n')``, ``declare_parameter('n', default)`` and
-``declare_parameters(namespace, [('n', default), ...])``. Names come from string literals or
-module-level string constants; message types from the file's imports.
+Recognised: ``create_publisher(T, 'n', qos)`` (and rclpy.lifecycle's ``create_lifecycle_publisher``),
+``create_subscription(T, 'n', cb, qos)``, ``create_service(T, 'n', cb)``, ``create_client(T, 'n')``,
+``ActionServer(node, T, 'n', ...)``, ``ActionClient(node, T, 'n')``, ``declare_parameter('n',
+default)`` and ``declare_parameters(namespace, [('n', default), ...])``; a class derived from
+``rclpy.lifecycle.Node`` makes the node a lifecycle node. Names come from string literals
+or module-level string constants; message types from the file's imports.
 """
 from __future__ import annotations
 
@@ -19,6 +20,7 @@ MAX_SOURCE = 2_000_000
 
 _CALLS = {
     "create_publisher": ("publishers", 0, 1, "msg_type", "topic"),
+    "create_lifecycle_publisher": ("publishers", 0, 1, "msg_type", "topic"),  # rclpy.lifecycle.Node
     "create_subscription": ("subscribers", 0, 1, "msg_type", "topic"),
     "create_service": ("services", 0, 1, "srv_type", "srv_name"),
     "create_client": ("clients", 0, 1, "srv_type", "srv_name"),
@@ -67,6 +69,18 @@ def _ros_type(node: ast.AST | None, imports: dict[str, str]) -> str | None:
     if len(parts) >= 3 and parts[-2] in ("msg", "srv", "action"):
         return f"{parts[-3]}/{parts[-2]}/{parts[-1]}"
     return None
+
+
+def _is_lifecycle_node(base: ast.AST, imports: dict[str, str]) -> bool:
+    """Whether a base class is rclpy's lifecycle node (``rclpy.lifecycle.Node``, also exported as
+    ``LifecycleNode``; ``rclpy.lifecycle.node.LifecycleNode``)."""
+    d = _dotted(base)
+    if not d:
+        return False
+    head, _, rest = d.partition(".")
+    full = imports.get(head, head) + ("." + rest if rest else "")
+    return full in ("rclpy.lifecycle.Node", "rclpy.lifecycle.LifecycleNode",
+                    "rclpy.lifecycle.node.LifecycleNode")
 
 
 def _const_strings(tree: ast.Module) -> dict[str, str]:
@@ -192,6 +206,10 @@ def _extract_one(path: str, tree: ast.Module, iface: NodeInterface) -> None:
     params = iface.parameters
     assert params is not None
     for node in ast.walk(tree):
+        if isinstance(node, ast.ClassDef):
+            if any(_is_lifecycle_node(b, imports) for b in node.bases):
+                iface.lifecycle = True
+            continue
         if not isinstance(node, ast.Call):
             continue
         fn = node.func

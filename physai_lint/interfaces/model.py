@@ -57,6 +57,8 @@ class NodeInterface:
     # dotted-name prefixes of generate_parameter_library ``__map_`` subtrees: any parameter below
     # them is declared at run time
     parameter_patterns: list[str] = field(default_factory=list)
+    # the code makes a lifecycle node: it has LIFECYCLE_ENDPOINTS too (the graph adds them)
+    lifecycle: bool = False
 
     def endpoints(self, kind: str) -> list[Endpoint]:
         return list(getattr(self, kind) or [])
@@ -74,6 +76,28 @@ class NodeInterface:
 
 ENDPOINT_KINDS = ("publishers", "subscribers", "services", "clients", "action_servers",
                   "action_clients")
+
+# What every lifecycle node has besides its own endpoints (rcl_lifecycle's com_interface.c, which
+# rclcpp_lifecycle and rclpy.lifecycle use): (kind, name, type).
+LIFECYCLE_ENDPOINTS: tuple[tuple[str, str, str], ...] = (
+    ("publishers", "~/transition_event", "lifecycle_msgs/msg/TransitionEvent"),
+    ("services", "~/change_state", "lifecycle_msgs/srv/ChangeState"),
+    ("services", "~/get_state", "lifecycle_msgs/srv/GetState"),
+    ("services", "~/get_available_states", "lifecycle_msgs/srv/GetAvailableStates"),
+    ("services", "~/get_available_transitions", "lifecycle_msgs/srv/GetAvailableTransitions"),
+    ("services", "~/get_transition_graph", "lifecycle_msgs/srv/GetAvailableTransitions"),
+)
+
+
+def add_lifecycle_endpoints(iface: NodeInterface, span: Span | None = None) -> None:
+    """Give ``iface`` the endpoints of a lifecycle node it does not list yet."""
+    for kind, name, type_ in LIFECYCLE_ENDPOINTS:
+        have = getattr(iface, kind)
+        if have is None:
+            have = []
+            setattr(iface, kind, have)
+        if not any(e.name == name for e in have):
+            have.append(Endpoint(name, type_, span))
 
 
 fast_pickle_module(globals())  # tuples instead of dataclasses.fields() per object (model/pickling.py)

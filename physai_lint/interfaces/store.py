@@ -231,6 +231,7 @@ def merge(layers: Iterable[NodeInterface]) -> NodeInterface | None:
     out.parameters = params
     out.parameters_complete = complete and params is not None
     out.parameter_patterns = patterns
+    out.lifecycle = any(layer.lifecycle for layer in layers)
     return out
 
 

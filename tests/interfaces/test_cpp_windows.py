@@ -52,6 +52,9 @@ CALLS = [
     'create_publisher<a::msg::B>("no_end", 1)',
     'x = u8R"d(raw)d"; create_publisher<a::msg::B>(u8"pref", 1);',
     '   # define CONT \\\n "continued"\n',
+    ('s = create_subscription<a::msg::B>("lam", 1, [this](B m) {\n  f(m); if (x) { g(); }\n  for (;;) {}\n});'),
+    'void Foo::subscribe() {\n  a(); b();\n}\nnamespace { int k; }',
+    'create_service<a::srv::B>("s", [](){ return; }',
 ]
 
 
@@ -85,7 +88,7 @@ _PIECES = CALLS + [
     ".", ",", "=", "[", "]", "R", "u8", "L", "1'0", "x", "true", "read_only", "kTopic", "d",
     "create_publisher", "declare_parameter", "advertise", "tf2_ros", "TransformListener", "é",
     '"x", 1);', "<a::msg::B>", 'k = "v";', 'k[] = "v";', 'k{"v"}', "(k, 1)", "1.e5", "1.f", ".5",
-    "0x1'F", "1e+"]
+    "0x1'F", "1e+", "[](){ f(); }", "{ x; }"]
 
 
 @settings(max_examples=2000, deadline=None)

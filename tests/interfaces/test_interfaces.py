@@ -119,6 +119,27 @@ def test_cpp_extraction():
     assert not i.parameters_complete
 
 
+def test_cpp_callbacks_written_as_lambdas_with_statements():
+    # a ";" inside a lambda's braces does not end the call (it used to hide the endpoint)
+    text = """
+    sub_ = create_subscription<std_msgs::msg::String>(
+      "chatter", 10, [this](const std_msgs::msg::String::SharedPtr msg) {
+        RCLCPP_INFO(get_logger(), "%s", msg->data.c_str());
+        for (int i = 0; i < 3; ++i) { count_ += i; }
+      });
+    srv_ = create_service<std_srvs::srv::Trigger>("reset",
+      [](const std::shared_ptr<std_srvs::srv::Trigger::Request>, std::shared_ptr<std_srvs::srv::Trigger::Response> r) {
+        r->success = true;
+      });
+    broken = create_publisher<std_msgs::msg::String>("unclosed", 10;
+    after = create_publisher<std_msgs::msg::String>("after", 10);
+    """
+    i = extract_cpp([("/ws/src/foo/src/lambdas.cpp", text)])
+    assert [(e.name, e.span.line) for e in i.subscribers] == [("chatter", 3)]
+    assert [e.name for e in i.services] == ["reset"]
+    assert [e.name for e in i.publishers] == ["after"]  # a ";" outside braces still ends a call
+
+
 def test_py_extraction():
     text = (HERE / "fixtures" / "talker.py").read_text()
     i = extract_py([("/ws/src/t/t/talker.py", text)])

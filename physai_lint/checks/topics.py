@@ -261,6 +261,9 @@ def _dangling(ctx: CheckContext, mine: str, other: str, code: str) -> Iterator[D
                 continue
             if g.unnamed_lifecycle and e.resolved.endswith("/transition_event"):
                 continue  # a lifecycle node of unknown name publishes one: maybe this one
+            if any(nid != e.node and kind == other and (t is None or e.type is None or t == e.type)
+                   for nid, kind, t in g.unnamed):
+                continue  # another node's end of this type under a name known only at run time
             if not _valid(e.resolved):
                 continue  # N104 reports the name itself; no node could ever match it
             if e.resolved in _IMPLICIT_TOPICS or any(fnmatchcase(e.resolved, p) for p in ignore):

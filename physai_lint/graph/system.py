@@ -44,6 +44,8 @@ class SystemGraph:
     # a lifecycle node whose name is unknown: its own endpoints (``~/transition_event``...) are
     # left out rather than unresolved, which would hide every dangling topic of the launch
     unnamed_lifecycle: bool = False
+    # (node id, kind, type) of the endpoints nodes make under names not known statically
+    unnamed: list[tuple[str, EndpointKind, str | None]] = field(default_factory=list)
     nx: Any = None
     _by_node: Any = field(default=None, init=False, repr=False, compare=False)
     _nodes: Any = field(default=None, init=False, repr=False, compare=False)
@@ -131,6 +133,9 @@ def build_graph(launch: LaunchResult, interfaces: Any, include_inactive: bool = 
         if node.kind == "lifecycle_node" or getattr(iface, "lifecycle", False):
             iface = _as_lifecycle(iface)  # launched as one, or its code makes one
         g.known.add(node.id)
+        for kind_attr, type_ in getattr(iface, "unnamed", None) or ():
+            if kind_attr in _KIND_OF:
+                g.unnamed.append((node.id, _KIND_OF[kind_attr], type_))
         for kind in KINDS:
             for ep in getattr(iface, _ATTR[kind], None) or ():
                 name = getattr(ep, "name", None)
@@ -146,6 +151,7 @@ def build_graph(launch: LaunchResult, interfaces: Any, include_inactive: bool = 
     return g
 
 
+_KIND_OF = {attr: kind for kind, attr in _ATTR.items()}
 _LIFECYCLE_KEYS = frozenset((kind, name) for kind, name, _ in LIFECYCLE_ENDPOINTS)
 
 

@@ -486,6 +486,7 @@ def extract_cpp(files: list[tuple[str, str]], cache: Any = None) -> NodeInterfac
         for kind in ENDPOINT_KINDS:
             getattr(iface, kind).extend(getattr(part, kind))
         iface.lifecycle = iface.lifecycle or part.lifecycle
+        iface.unnamed.extend(part.unnamed)
         for name, decl in part.parameters.items():  # type: ignore[union-attr]
             mine = iface.parameters.setdefault(name, dataclasses.replace(decl))  # type: ignore[union-attr]
             if decl.read_only:  # a declaration in this file makes it read-only
@@ -945,17 +946,21 @@ def _extract_from(path: str, view: _Whole | _Windows, iface: NodeInterface) -> N
             if ns == "rclcpp_action":
                 if len(args) >= 2:
                     n, tok = _name_of(args[1], consts)
+                    kind = "action_servers" if name == "create_server" else "action_clients"
                     if n is not None:
-                        kind = "action_servers" if name == "create_server" else "action_clients"
                         getattr(iface, kind).append(Endpoint(n, ros_type(targ), _span(path, tok)))
+                    else:
+                        iface.unnamed.append((kind, ros_type(targ)))
                 continue
             if ns == "image_transport":
                 if len(args) >= 2 and name in ("create_publisher", "create_subscription"):
                     n, tok = _name_of(args[1], consts)
+                    kind = _ENDPOINT_CALLS[name]
                     if n is not None:
-                        kind = _ENDPOINT_CALLS[name]
                         getattr(iface, kind).append(
                             Endpoint(n, "sensor_msgs/msg/Image", _span(path, tok)))
+                    else:
+                        iface.unnamed.append((kind, "sensor_msgs/msg/Image"))
                 continue
             if name == "create_server" or not args or targ is None:
                 continue
@@ -963,15 +968,18 @@ def _extract_from(path: str, view: _Whole | _Windows, iface: NodeInterface) -> N
             if n is not None:
                 getattr(iface, _ENDPOINT_CALLS[name]).append(
                     Endpoint(n, ros_type(targ), _span(path, tok)))
+            else:
+                iface.unnamed.append((_ENDPOINT_CALLS[name], ros_type(targ)))
         elif name in ("advertise", "subscribe", "advertiseCamera", "subscribeCamera") and \
                 prev in (".", "->"):
             parsed = _call_args(toks, i + 1)
             if parsed is None or not parsed[0]:
                 continue
             n, tok = _name_of(parsed[0][0], consts)
-            if n is None:
-                continue
             kind = "publishers" if name.startswith("advertise") else "subscribers"
+            if n is None:
+                iface.unnamed.append((kind, "sensor_msgs/msg/Image"))
+                continue
             getattr(iface, kind).append(Endpoint(n, "sensor_msgs/msg/Image", _span(path, tok)))
         elif name in ("declare_parameter", "declare_parameter_if_not_declared",
                       "declare_or_get_parameter"):

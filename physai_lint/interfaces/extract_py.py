@@ -223,9 +223,11 @@ def _extract_one(path: str, tree: ast.Module, iface: NodeInterface) -> None:
                 continue
             name_node = _arg(node, npos, nkw)
             name = _str_of(name_node, consts)
-            if name is None or name_node is None:
-                continue
             rtype = _ros_type(_arg(node, tpos, tkw), imports)
+            if name is None or name_node is None:
+                if name_node is not None:  # a name, just not one known statically
+                    iface.unnamed.append((kind, rtype))
+                continue
             getattr(iface, kind).append(Endpoint(name, rtype, _span(path, name_node)))
         elif fname == "declare_parameter" and isinstance(fn, ast.Attribute):
             name_node = _arg(node, 0, "name")

@@ -59,6 +59,9 @@ class NodeInterface:
     parameter_patterns: list[str] = field(default_factory=list)
     # the code makes a lifecycle node: it has LIFECYCLE_ENDPOINTS too (the graph adds them)
     lifecycle: bool = False
+    # (kind, type) of each endpoint the code makes under a name not known statically (a
+    # parameter's value, a computed string): it may be the other end of any topic of that type
+    unnamed: list[tuple[str, str | None]] = field(default_factory=list)
 
     def endpoints(self, kind: str) -> list[Endpoint]:
         return list(getattr(self, kind) or [])

@@ -213,12 +213,17 @@ def merge(layers: Iterable[NodeInterface]) -> NodeInterface | None:
         return None
     out = NodeInterface(source=" + ".join(x.source for x in layers if x.source))
     for kind in ENDPOINT_KINDS:
+        chosen = None
         for layer in layers:
             v = getattr(layer, kind)
             if v is not None and (v or layer.source.startswith("bundled") or
                                   not layer.source.startswith("extracted")):
                 setattr(out, kind, list(v))
+                chosen = layer
                 break
+        if chosen is None or chosen.source.startswith("extracted"):  # the code's word on this kind
+            out.unnamed.extend(u for layer in layers if layer.source.startswith("extracted")
+                               for u in layer.unnamed if u[0] == kind)
     params: dict[str, ParamDecl] | None = None
     complete = False
     patterns: list[str] = []

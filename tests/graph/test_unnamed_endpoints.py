@@ -1,0 +1,62 @@
+"""An endpoint whose name the code computes (a parameter's value, a built string) may be the
+other end of any topic of its type: T201/T202 do not report a topic such an endpoint could be."""
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+from physai_lint.engine import CheckOptions, run_check
+from physai_lint.interfaces.extract_cpp import extract_cpp
+from physai_lint.interfaces.extract_py import extract_py
+
+CMAKE = """project(demo)
+add_executable(mapper src/mapper.cpp)
+add_executable(user src/user.cpp)
+install(TARGETS mapper user DESTINATION lib/${PROJECT_NAME})
+install(DIRECTORY launch DESTINATION share/${PROJECT_NAME})
+"""
+MAPPER = """
+Mapper::Mapper() : Node("mapper") {
+  auto topic = declare_parameter<std::string>("topic_name", "map");
+  pub_ = create_publisher<nav_msgs::msg::OccupancyGrid>(topic, 1);
+  info_ = create_publisher<std_msgs::msg::String>("info", 1);
+}
+"""
+USER = """
+User::User() : Node("user") {
+  map_ = create_subscription<TYPE>("/map", 1, [this](auto m) { on_map(m); });
+  info_ = create_subscription<std_msgs::msg::String>("info", 1, std::bind(&User::cb, this, _1));
+}
+"""
+LAUNCH = """<launch>
+  <node pkg="demo" exec="mapper" name="mapper"/>
+  <node pkg="demo" exec="user" name="user"/>
+</launch>
+"""
+
+
+def _t201(tmp_path: Path, demo_package: Any, user_type: str) -> list[str]:
+    pkg = demo_package({"CMakeLists.txt": CMAKE, "src/mapper.cpp": MAPPER,
+                        "src/user.cpp": USER.replace("TYPE", user_type), "launch/a.launch.xml": LAUNCH})
+    opts = CheckOptions(paths=[str(pkg / "launch/a.launch.xml")], workspace=str(tmp_path), cache=False)
+    return [f.message for f in run_check(opts).findings if f.code == "T201"]
+
+
+def test_a_computed_name_of_the_same_type_may_be_the_publisher(tmp_path: Path, demo_package: Any) -> None:
+    assert _t201(tmp_path, demo_package, "nav_msgs::msg::OccupancyGrid") == []
+
+
+def test_a_computed_name_of_another_type_is_not(tmp_path: Path, demo_package: Any) -> None:
+    found = _t201(tmp_path, demo_package, "sensor_msgs::msg::Image")
+    assert len(found) == 1 and '"/map"' in found[0]
+
+
+def test_extractors_record_them() -> None:
+    cpp = extract_cpp([("a.cpp", MAPPER)])
+    assert [e.name for e in cpp.publishers] == ["info"]
+    assert cpp.unnamed == [("publishers", "nav_msgs/msg/OccupancyGrid")]
+    source = ("from nav_msgs.msg import OccupancyGrid\n"
+              "class M(Node):\n    def __init__(self):\n"
+              "        self.create_subscription(OccupancyGrid, self.topic, self.cb, 1)\n")
+    py = extract_py([("a.py", source)])
+    assert py.subscribers == [] and py.unnamed == [("subscribers", "nav_msgs/msg/OccupancyGrid")]

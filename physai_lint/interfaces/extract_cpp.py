@@ -354,8 +354,12 @@ def _call_args(toks: list[Tok], i: int) -> tuple[list[list[Tok]], int] | None:
 
 
 def _constants(toks: list[Tok]) -> dict[str, str]:
-    """``NAME = "literal";`` / ``NAME[] = "literal";`` / ``NAME{"literal"}`` / ``#define``."""
-    out: dict[str, str] = {}
+    """``NAME = "literal";`` / ``NAME[] = "literal";`` / ``NAME{"literal"}`` / ``#define``: the
+    names given one literal, and nothing else, in the file (a variable set to ``"map"`` in one
+    branch and to a parameter's value in another is not a constant). The last ``#define`` of a
+    name wins over anything."""
+    values: dict[str, set[str]] = {}
+    defines: dict[str, str] = {}
     for j in [j for j, t in enumerate(toks) if t[0] == "str"]:
         if j < 2:
             continue
@@ -363,10 +367,23 @@ def _constants(toks: list[Tok]) -> dict[str, str]:
         if k is None:
             continue
         if toks[j - 1].kind == "id" and toks[j - 2].text == "#define":
-            out[toks[j - 1].text] = toks[j].text  # the last #define wins
+            defines[toks[j - 1].text] = toks[j].text
         elif _is_constant_name(toks, k):
-            out.setdefault(toks[k].text, toks[j].text)  # the first definition wins
+            values.setdefault(toks[k].text, set()).add(toks[j].text)
+    assigned = {t[1] for k, t in enumerate(toks) if t[0] == "id" and _assigned_otherwise(toks, k)}
+    out = {name: next(iter(v)) for name, v in values.items() if len(v) == 1 and name not in assigned}
+    out.update(defines)
     return out
+
+
+def _assigned_otherwise(toks: list[Tok], k: int) -> bool:
+    """Whether ``toks[k]`` is given something other than a string literal: ``NAME = value`` (not
+    ``==``), ``NAME += ...``."""
+    nxt = toks[k + 1][1] if k + 1 < len(toks) else ""
+    after = toks[k + 2] if k + 2 < len(toks) else None
+    if nxt == "=":
+        return after is not None and after[1] != "=" and after[0] != "str"
+    return nxt == "+" and after is not None and after[1] == "="
 
 
 def _name_of(arg: list[Tok], consts: _Constants) -> tuple[str | None, Tok | None]:
@@ -846,6 +863,7 @@ class _LazyConstants:
         if name in ("return", "std", "string"):
             return None
         text = view.text
+        values: set[str] = set()
         for m in re.finditer(re.escape(name), text):
             p = m.start()
             if m.end() < len(text) and text[m.end()] in _IDCHARS or view._inside(p):
@@ -863,11 +881,14 @@ class _LazyConstants:
                 toks = tokenize(text, p, end, line, ls)
             if not toks or toks[0][1] != name or toks[0][0] != "id":
                 continue
+            if _assigned_otherwise(toks, 0):
+                return None  # a variable
             first = 2 if view._first_token(p) else 1  # (_constants skips a literal at 0 or 1)
             for j in range(first, min(len(toks), 7)):
                 if toks[j][0] == "str" and _constant_name_at(toks, j) == 0:
-                    return toks[j][1]  # (toks[0] is the name: _is_constant_name holds)
-        return None
+                    values.add(toks[j][1])  # (toks[0] is the name: _is_constant_name holds)
+                    break
+        return next(iter(values)) if len(values) == 1 else None
 
 
 def _brace_open(toks: list[Tok], i: int) -> bool:

@@ -140,6 +140,25 @@ def test_cpp_callbacks_written_as_lambdas_with_statements():
     assert [e.name for e in i.publishers] == ["after"]  # a ";" outside braces still ends a call
 
 
+def test_cpp_names_from_constants_only_when_they_are_constants():
+    text = """
+    static constexpr char kScan[] = "scan";
+    std::string topic_ = "map";          // a variable: set from a parameter below
+    const char * TWICE = "a";
+    void f() { topic_ = get_parameter("topic").as_string(); }
+    void g() { const char * TWICE = "b"; }  // another scope, another value: unknown
+    #define DEFINED "defined"
+    auto s = create_subscription<sensor_msgs::msg::LaserScan>(kScan, 10, cb);
+    auto m = create_subscription<nav_msgs::msg::OccupancyGrid>(topic_, 10, cb);
+    auto t = create_publisher<std_msgs::msg::String>(TWICE, 10);
+    auto d = create_publisher<std_msgs::msg::String>(DEFINED, 10);
+    """
+    i = extract_cpp([("/ws/src/foo/src/consts.cpp", text)])
+    assert [e.name for e in i.subscribers] == ["scan"]
+    assert [e.name for e in i.publishers] == ["defined"]
+    assert i.unnamed == [("subscribers", "nav_msgs/msg/OccupancyGrid"), ("publishers", "std_msgs/msg/String")]
+
+
 def test_py_extraction():
     text = (HERE / "fixtures" / "talker.py").read_text()
     i = extract_py([("/ws/src/t/t/talker.py", text)])

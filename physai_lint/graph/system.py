@@ -160,13 +160,10 @@ def _as_lifecycle(iface: Any) -> Any:
     them: a class derived from a project's own lifecycle base, or no source found)."""
     import copy
 
-    if all(any(getattr(e, "name", None) == name for e in getattr(iface, kind, None) or ())
-           for kind, name, _ in LIFECYCLE_ENDPOINTS):
-        return iface
     out = copy.copy(iface)
     for kind, _, _ in LIFECYCLE_ENDPOINTS:
         setattr(out, kind, list(getattr(iface, kind, None) or ()))
-    add_lifecycle_endpoints(out)
+    add_lifecycle_endpoints(out)  # (those it lists already are not added twice)
     return out
 
 

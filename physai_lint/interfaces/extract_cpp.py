@@ -6,8 +6,10 @@ Recognised: ``create_publisher<T>("n", ...)``, ``create_subscription<T>("n", ...
 (node, "n", ...)`` / ``create_client``, image_transport ``create_publisher``/``create_subscription``
 (node first) and ``advertise``/``subscribe``/``advertiseCamera``/``subscribeCamera``,
 ``declare_parameter<T>("n", default)`` / ``declare_parameter("n", default)`` and nav2's
-``declare_parameter_if_not_declared(node, "n", ParameterValue(default))``. Names are taken only
-from string literals or constants defined in the same file.
+``declare_parameter_if_not_declared(node, "n", ParameterValue(default))``; a class derived from
+``rclcpp_lifecycle::LifecycleNode`` (or nav2's) marks a lifecycle node. Names are taken only from
+string literals or constants the file gives one literal; an endpoint named otherwise is kept as
+its kind and type (``NodeInterface.unnamed``).
 """
 from __future__ import annotations
 
@@ -176,16 +178,7 @@ def _step(text: str, i: int, n: int, line: int, line_start: int,
         return j, line, line_start
     if c == "#" and text[line_start:i].strip() == "":
         # preprocessor line: keep #define NAME "literal" as tokens, skip the rest
-        j = i
-        while True:
-            k = text.find("\n", j)
-            if k < 0:
-                k = n
-                break
-            if text[k - 1:k] == "\\":
-                j = k + 1
-                continue
-            break
+        k = _line_end(text, i, n)
         m = _DEFINE.match(text[i:k])
         if m:
             sl, sc = pos(i)
@@ -270,6 +263,19 @@ def _step(text: str, i: int, n: int, line: int, line_start: int,
         return i + 2, line, line_start
     toks.append(_new(Tok, ("op", c, sl, sc, sl, sc + 1)))
     return i + 1, line, line_start
+
+
+def _line_end(text: str, i: int, n: int) -> int:
+    """The offset of the newline that ends the (preprocessor) line from ``i``: the first one no
+    backslash continues, or ``n``."""
+    j = i
+    while True:
+        k = text.find("\n", j)
+        if k < 0:
+            return n
+        if text[k - 1:k] != "\\":
+            return k
+        j = k + 1
 
 
 def _unescape(s: str) -> str:
@@ -713,17 +719,7 @@ class _Windows:
                 if text[line_start:s].strip():
                     pos = s + 1  # an operator, not a preprocessor line
                     continue
-                e = s
-                while True:  # to the newline that no backslash continues
-                    k = text.find("\n", e)
-                    if k < 0:
-                        e = n
-                        break
-                    if text[k - 1:k] == "\\":
-                        e = k + 1
-                        continue
-                    e = k
-                    break
+                e = _line_end(text, s, n)
                 d = _DEFINE.match(text[s:e])
                 if d:
                     defines.append((d.group(1), _unescape(d.group(2))))
@@ -796,7 +792,7 @@ class _Windows:
         before = 4 if name == "LifecycleNode" else 2
         end = self._statement_end(p)
         ls = self._line_start(p)
-        for _ in range(8):  # a line back at a time, while fewer than two tokens come before
+        for _ in range(8):  # a line back at a time, while fewer than ``before`` tokens come first
             line = self._line_of(ls)
             toks = tokenize(self.text, ls, end, line, ls)
             at_line, at_col = self._line_of(p), p - self.text.rfind("\n", 0, p)

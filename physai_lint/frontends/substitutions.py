@@ -102,7 +102,7 @@ class positions_from(Sequence[tuple[int, int]]):  # used like the function it wa
     def __init__(self, text: str, line: int, col: int) -> None:
         self.n = len(text) + 1
         self.line, self.col = line, col
-        self.starts = [m.end() for m in re.finditer("\n", text)]
+        self.starts = [m.end() for m in re.finditer("\n", text)] if "\n" in text else []
 
     def __len__(self) -> int:
         return self.n

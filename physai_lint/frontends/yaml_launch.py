@@ -126,7 +126,9 @@ class _Reader:
         quoted = value.style in ("'", '"')
         start = self.offset(value.start_mark) + (1 if quoted else 0)
         end = self.offset(value.end_mark) - (1 if quoted else 0)
-        positions = self.positions(text, start, end)
+        # A verbatim value (plain, or quoted without escapes or folding) needs no table: its
+        # characters follow its start, as parse_substitutions assumes when given none.
+        positions = None if self.text[start:end] == text else self.positions(text, start, end)
         vspan = self.span(value)
         if quoted:
             (l1, c1), (l2, c2) = self.lc(start), self.lc(max(end, start))

@@ -12,10 +12,29 @@ from physai_lint.resolve.model import ParamValue, ResolvedParam
 MAX_YAML_TEXT = 100_000
 
 
+# yaml_type of short texts, by text: a workspace gives hundreds of nodes the same few values
+# ("true", "false", "0.5"), and a libyaml loader costs more to build than such a value to read.
+_TYPED: dict[str, ParamValue] = {}
+_TYPED_TEXT = 200
+_TYPED_MAX = 4096
+
+
 def yaml_type(text: str) -> ParamValue:
     """What ``yaml.safe_load`` makes of an evaluated substitution string; None when launch rejects it."""
     if text == "":
         return ""
+    if len(text) > _TYPED_TEXT:
+        return _yaml_type(text)
+    try:
+        value = _TYPED[text]
+    except KeyError:
+        value = _yaml_type(text)
+        if len(_TYPED) < _TYPED_MAX:
+            _TYPED[text] = value
+    return list(value) if isinstance(value, list) else value  # callers own their lists
+
+
+def _yaml_type(text: str) -> ParamValue:
     if len(text) > MAX_YAML_TEXT or "&" in text or "*" in text and "[" in text:
         return text if "\n" not in text else None
     import yaml

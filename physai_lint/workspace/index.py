@@ -118,6 +118,7 @@ class PackageIndex:
         self.notes: list[tuple[str, str, int]] = []
         self._text_cache: dict[str, str | None] = {}
         self._exists_cache: dict[str, bool] = {}
+        self._isdir_cache: dict[str, bool] = {}
         self._installed_exes: dict[str, frozenset[str] | None] = {}
         self._installed_plugins: dict[str, frozenset[str] | None] = {}
         self._by_dir: dict[str, str] = {}  # source directory -> package name
@@ -398,6 +399,13 @@ class PackageIndex:
     def exists(self, path: str) -> bool:
         """Does a file or directory exist on disk (cached)?"""
         return self._exists(_norm(path))
+
+    def is_dir(self, path: str) -> bool:
+        """Is ``path`` a directory on disk (cached: every node asks it of its parameter files)?"""
+        found = self._isdir_cache.get(path)
+        if found is None:
+            found = self._isdir_cache[path] = os.path.isdir(path)
+        return found
 
     # ---- reading ---------------------------------------------------------------------------------
 

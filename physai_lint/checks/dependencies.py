@@ -2,10 +2,9 @@
 from __future__ import annotations
 
 from collections.abc import Iterator
-from typing import Any
 
+from physai_lint.checks._util import ir_objects
 from physai_lint.checks.base import CheckContext, rule
-from physai_lint.model.fields import ATOMS, POSITION_FIELDS, field_names
 from physai_lint.model.findings import Diagnostic
 from physai_lint.model.span import Span
 from physai_lint.model.values import Command, FindPackage, PathJoin, literal_of
@@ -90,25 +89,6 @@ def missing_file(ctx: CheckContext) -> Iterator[Diagnostic]:
     yield from _command_files(ctx, seen)
 
 
-def _collect_commands(obj: Any, out: list[Command], depth: int = 0) -> None:
-    if depth > 60 or type(obj) in ATOMS:
-        return
-    if isinstance(obj, (tuple, list)):
-        for item in obj:
-            if type(item) not in ATOMS:
-                _collect_commands(item, out, depth + 1)
-        return
-    if isinstance(obj, Command):
-        out.append(obj)
-        return
-    for name in field_names(type(obj)):
-        if name in POSITION_FIELDS:
-            continue
-        child = getattr(obj, name)
-        if type(child) not in ATOMS:
-            _collect_commands(child, out, depth + 1)
-
-
 def _known_share_path(ctx: CheckContext, join: PathJoin) -> tuple[str, str] | None:
     """(package, relative path) of ``PathJoin([FindPackageShare('p'), 'a', 'b'])`` with literals."""
     if not join.parts or len(join.parts[0]) != 1 or not isinstance(join.parts[0][0], FindPackage):
@@ -129,9 +109,9 @@ def _command_files(ctx: CheckContext, seen: set[tuple[object, str]]) -> Iterator
     if not root:
         return
     for path in sorted(ctx.launch_files):
-        commands: list[Command] = []
-        _collect_commands(ctx.launch_files[path].actions, commands)
-        for cmd in commands:
+        for cmd in ir_objects(ctx, path):
+            if not isinstance(cmd, Command):
+                continue
             for part in cmd.command:
                 if not isinstance(part, PathJoin) or part.span is None:
                     continue

@@ -4,10 +4,10 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import Any
 
+from physai_lint.checks._util import ir_objects
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.frontends.substitutions import DISTRO_ONLY_SUBSTITUTIONS, LAUNCH_LOG_DIR_REASON
 from physai_lint.frontends.tags import unknown_markup
-from physai_lint.model.fields import ATOMS, POSITION_FIELDS, field_names
 from physai_lint.model.findings import Diagnostic
 from physai_lint.model.values import BoolOp, Compare, FileContent, IfElse, Unknown
 
@@ -58,22 +58,6 @@ def _subst_name(part: Any) -> str | None:
     return None
 
 
-def _walk(obj: Any, out: list[tuple[str, Any]], depth: int = 0) -> None:
-    if depth > 60 or type(obj) in ATOMS:
-        return
-    if isinstance(obj, (tuple, list)):
-        for item in obj:
-            _walk(item, out, depth + 1)
-        return
-    name = _subst_name(obj)
-    span = getattr(obj, "span", None)
-    if name is not None and span is not None:
-        out.append((name, span))
-    for field_name in field_names(type(obj)):
-        if field_name not in POSITION_FIELDS:
-            _walk(getattr(obj, field_name), out, depth + 1)
-
-
 @rule("L114", "substitution-not-in-distro")
 def substitution_not_in_distro(ctx: CheckContext) -> Iterator[Diagnostic]:
     if ctx.distro != "humble":
@@ -86,7 +70,11 @@ def substitution_not_in_distro(ctx: CheckContext) -> Iterator[Diagnostic]:
             if lf.python is not None:
                 found = [(_PY_NEWER[c.qualname], c.span) for c in lf.python.calls if c.qualname in _PY_NEWER]
         else:
-            _walk(lf.actions, found)
+            for obj in ir_objects(ctx, path):
+                name = _subst_name(obj)
+                span = getattr(obj, "span", None)
+                if name is not None and span is not None:
+                    found.append((name, span))
         for name, span in found:
             since = DISTRO_ONLY_SUBSTITUTIONS.get(name)
             if since is None or span in seen:

@@ -130,7 +130,8 @@ def build_project(opts: CheckOptions, cwd: str | None = None, progress: Any = No
                                files=len(store.launches) + len(store.params), leaves=leaves)
 
     progress.stage("resolving", len(launch_files))
-    launches = choose_roots(launch_files, loader, resolve, progress.advance, resolve_many)
+    launches = choose_roots(launch_files, loader, resolve, progress.advance, resolve_many,
+                            getattr(packages, "package_name_of", None))
     targets = set(paths) | set(found.launch_files) | set(found.param_files)
     for r in launches:
         if r.entry in explicit or any(r.entry.startswith(p.rstrip("/") + "/") for p in paths) or \

@@ -54,8 +54,22 @@ def _last_text(value: Any) -> str | None:
     return None
 
 
-def included_names(lf: Any) -> set[str]:
-    """File names this file's include actions end with, where the last part is literal."""
+def _first_package(value: Any) -> str | None:
+    """The literal package a path value starts in (``$(find-pkg-share p)/...``,
+    ``PathJoinSubstitution([FindPackageShare('p'), ...])``), or None."""
+    if not value:
+        return None
+    part = value[0]
+    if isinstance(part, v.FindPackage):
+        return v.literal_of(part.package)
+    if isinstance(part, v.PathJoin) and part.parts:
+        return _first_package(part.parts[0])
+    return None
+
+
+def included_targets(lf: Any) -> set[tuple[str | None, str]]:
+    """(package or None, file name) of this file's include actions whose last part is literal;
+    the package where the path starts with a literal ``find-pkg`` of one."""
     out = set()
     for a in _actions(lf):
         if isinstance(a, ir.Include):
@@ -63,8 +77,13 @@ def included_names(lf: Any) -> set[str]:
             if tail:
                 name = posixpath.basename(tail)
                 if name:
-                    out.add(name)
+                    out.add((_first_package(a.path), name))
     return out
+
+
+def included_names(lf: Any) -> set[str]:
+    """File names this file's include actions end with, where the last part is literal."""
+    return {name for _, name in included_targets(lf)}
 
 
 def nodes_on_cycles(graph: dict[str, set[str]]) -> set[str]:
@@ -118,12 +137,16 @@ def nodes_on_cycles(graph: dict[str, set[str]]) -> set[str]:
 
 def choose_roots(launch_files: list[str], load: Callable[[str], Any], resolve: Callable[[str], Any],
                  advance: Callable[[int], None],
-                 resolve_many: Callable[[list[str], bool], list[Any]] | None = None) -> list[Any]:
+                 resolve_many: Callable[[list[str], bool], list[Any]] | None = None,
+                 package_of: Callable[[str], str | None] | None = None) -> list[Any]:
     """The resolved roots, in the order of ``launch_files``. ``resolve(path)`` resolves one entry;
     ``resolve_many(paths, leaves)`` resolves several independent ones, in order (in parallel with
     ``--jobs``; by default one after the other), ``leaves`` when none of them includes a file
     (each resolves in a fraction of a millisecond); ``advance(n)`` counts entries that were settled
-    without resolving them."""
+    without resolving them. ``package_of(path)``: the workspace package holding a file, if known;
+    an include that names its package then guesses only that package's file of the name (many
+    packages have a ``bringup.launch.py``: by name alone, they would all guess each other, a cycle,
+    and every one of them would be resolved)."""
     many = resolve_many or (lambda paths, leaves: [resolve(p) for p in paths])
     parsed = {p: load(p) for p in launch_files}
     leaves = {p for p in launch_files if not has_include(parsed[p])}
@@ -131,8 +154,15 @@ def choose_roots(launch_files: list[str], load: Callable[[str], Any], resolve: C
     by_name: dict[str, list[str]] = {}
     for p in includers:
         by_name.setdefault(posixpath.basename(p), []).append(p)
+    owner = {p: package_of(p) for p in includers} if package_of is not None else {}
+
+    def named(pkg: str | None, name: str) -> Iterator[str]:
+        for q in by_name.get(name, ()):
+            if pkg is None or owner.get(q) in (None, pkg):
+                yield q
+
     # The guess: which includers each includer names (itself included: a cycle of one).
-    graph = {p: {q for n in included_names(parsed[p]) for q in by_name.get(n, ())} for p in includers}
+    graph = {p: {q for pkg, n in included_targets(parsed[p]) for q in named(pkg, n)} for p in includers}
     cyclic = nodes_on_cycles(graph)
     guessed = {q for p, qs in graph.items() if p not in cyclic for q in qs if q != p} - cyclic
     first = [p for p in includers if p not in guessed]

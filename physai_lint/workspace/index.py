@@ -257,6 +257,11 @@ class PackageIndex:
         name = next(self._names_holding(_norm(path)), None)
         return None if name is None else self.packages.get(name)
 
+    def package_name_of(self, path: str) -> str | None:
+        """The name of the workspace package whose directory holds ``path`` (the deepest), without
+        reading the package."""
+        return next(self._names_holding(_norm(path)), None)
+
     def _names_holding(self, path: str) -> Iterator[str]:
         """The packages whose directories hold ``path``, deepest first: a walk up the path (a
         dict lookup per level, instead of a scan of every package per call)."""

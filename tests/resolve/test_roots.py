@@ -130,3 +130,31 @@ def test_on_cycle_matches_networkx(edges):
     expected = {n for comp in nx.strongly_connected_components(g) for n in comp
                 if len(comp) > 1 or g.has_edge(n, n)}
     assert nodes_on_cycles(graph) == expected
+
+
+def test_an_include_naming_its_package_guesses_only_that_packages_file(tmp_path, monkeypatch):
+    # Three packages, each with a bringup.launch.xml; p2's includes p1's, p1's includes p0's. By
+    # file name alone every bringup names every other (a cycle of guesses: all three resolved);
+    # with the package the include names, only p2's is resolved. The roots are the same either way.
+    from tests.conftest import DEMO_CMAKE, DEMO_PACKAGE_XML
+
+    for i in range(3):
+        pkg = tmp_path / "src" / f"p{i}"
+        (pkg / "launch").mkdir(parents=True)
+        (pkg / "package.xml").write_text(DEMO_PACKAGE_XML.replace("<name>demo</name>", f"<name>p{i}</name>"))
+        (pkg / "CMakeLists.txt").write_text(DEMO_CMAKE.replace("project(demo)", f"project(p{i})"))
+        body = _inc("bringup.launch.xml", pkg=f"p{i - 1}") if i else ""
+        (pkg / "launch" / "bringup.launch.xml").write_text(_launch(body, _node(f"n{i}")))
+    resolved: list[str] = []
+    real = instantiate.resolve_launch
+
+    def counting(entry, *args, **kwargs):
+        resolved.append(entry.split("/src/", 1)[1])
+        return real(entry, *args, **kwargs)
+
+    monkeypatch.setattr(instantiate, "resolve_launch", counting)
+    project = build_project(CheckOptions(paths=[str(tmp_path / "src")], workspace=str(tmp_path), cache=False,
+                                         jobs=1))
+    assert [r.entry.split("/src/", 1)[1] for r in project.launches] == ["p2/launch/bringup.launch.xml"]
+    assert resolved == ["p2/launch/bringup.launch.xml"]
+    assert sorted(n.name for n in project.launches[0].nodes) == ["n0", "n1", "n2"]

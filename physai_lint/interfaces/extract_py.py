@@ -13,6 +13,7 @@ import ast
 from typing import Any
 
 from physai_lint.model.span import Span
+from physai_lint.pyast import ast_nodes
 
 from .model import Endpoint, NodeInterface, ParamDecl
 
@@ -35,10 +36,10 @@ _PARAM_TYPE_NAMES = {
 }
 
 
-def _imports(tree: ast.Module) -> dict[str, str]:
+def _imports(nodes: list[ast.AST]) -> dict[str, str]:
     """local name -> dotted origin (``String`` -> ``std_msgs.msg.String``)."""
     out: dict[str, str] = {}
-    for node in ast.walk(tree):
+    for node in nodes:
         if isinstance(node, ast.ImportFrom) and node.module:
             for a in node.names:
                 out[a.asname or a.name] = f"{node.module}.{a.name}"
@@ -175,10 +176,10 @@ def _is_true(node: ast.AST | None) -> bool:
     return isinstance(node, ast.Constant) and node.value is True
 
 
-def _read_only_descriptors(tree: ast.Module) -> set[str]:
+def _read_only_descriptors(nodes: list[ast.AST]) -> set[str]:
     """Names bound to a ``ParameterDescriptor(read_only=True)`` or given ``.read_only = True``."""
     out: set[str] = set()
-    for node in ast.walk(tree):
+    for node in nodes:
         if not isinstance(node, ast.Assign):
             continue
         for t in node.targets:
@@ -200,12 +201,13 @@ def _descriptor_read_only(node: ast.AST | None, names: set[str]) -> bool:
 
 
 def _extract_one(path: str, tree: ast.Module, iface: NodeInterface) -> None:
-    imports = _imports(tree)
+    nodes = ast_nodes(tree)
+    imports = _imports(nodes)
     consts = _const_strings(tree)
-    read_only = _read_only_descriptors(tree)
+    read_only = _read_only_descriptors(nodes)
     params = iface.parameters
     assert params is not None
-    for node in ast.walk(tree):
+    for node in nodes:
         if isinstance(node, ast.ClassDef):
             if any(_is_lifecycle_node(b, imports) for b in node.bases):
                 iface.lifecycle = True

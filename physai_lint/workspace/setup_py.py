@@ -9,6 +9,8 @@ import configparser
 import os
 import posixpath
 
+from physai_lint.pyast import ast_nodes
+
 from ._glob import glob_files
 from ._model import BuildInfo, InstallRule
 
@@ -175,8 +177,8 @@ class _Eval:
 _MISSING = object()
 
 
-def _find_setup_call(tree: ast.Module) -> ast.Call | None:
-    for node in ast.walk(tree):
+def _find_setup_call(nodes: list[ast.AST]) -> ast.Call | None:
+    for node in nodes:
         if isinstance(node, ast.Call):
             f = node.func
             name = f.id if isinstance(f, ast.Name) else f.attr if isinstance(f, ast.Attribute) else ""
@@ -216,7 +218,8 @@ def read_setup_py(pkg_dir: str, pkg_name: str, files: frozenset[str], text: str 
         info.problems.append((path, f"setup.py does not parse: {exc}", getattr(exc, "lineno", 1) or 1))
         return info
     ev = _Eval(pkg_dir, files)
-    setup_call = _find_setup_call(tree)
+    nodes = ast_nodes(tree)
+    setup_call = _find_setup_call(nodes)
     data_files: list[object] | None = None
     data_files_var: str | None = None
     if setup_call is not None:
@@ -287,7 +290,7 @@ def read_setup_py(pkg_dir: str, pkg_name: str, files: frozenset[str], text: str 
             # a loop or function may add data files we cannot see
             info.complete = False
     # generate_parameter_module(module_name, yaml_file) anywhere in the file
-    for node in ast.walk(tree):
+    for node in nodes:
         if isinstance(node, ast.Call):
             f = node.func
             fname = f.id if isinstance(f, ast.Name) else f.attr if isinstance(f, ast.Attribute) else ""

@@ -24,6 +24,7 @@ from physai_lint.frontends import FrontendResult
 from physai_lint.model.findings import Diagnostic
 from physai_lint.model.launch import LaunchFile, OpaqueAction, PythonFacts
 from physai_lint.model.span import Span
+from physai_lint.pyast import ast_nodes
 
 from . import convert_values
 from .calls import call_user
@@ -102,7 +103,7 @@ def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | N
             actions = (OpaqueAction("opaque@gld", Span.whole_file(path), None,
                                     "generate_launch_description does not return a LaunchDescription"),)
     try:
-        nodes = list(ast.walk(tree))
+        nodes = ast_nodes(tree)
         calls = tuple(call_facts(nodes, spans, ev.kw_kinds))
         names = tuple(undefined_names(tree, nodes, spans, text))
     except RecursionError:

@@ -254,21 +254,23 @@ FORK_MIN_ENV = "PHYSAI_LINT_FORK_MIN_FILES"
 # A rule missing from here is still right, only slower: it builds what it needs itself.
 SHARED_MEMOS: tuple[tuple[int, tuple[str, ...]], ...] = (
     # (what the memo costs, in the units of RULE_COST, to add to its rules' own; the rules)
-    (90, ("N104", "T102", "T104", "T201", "T202", "T203", "T204")),  # graphs
-    (170, ("P105", "P107", "P108", "P109", "P111", "P112")),  # effective parameters
+    (100, ("N104", "T102", "T104", "T201", "T202", "T203", "T204")),  # graphs
+    (80, ("P105", "P107", "P108", "P109", "P111", "P112")),  # effective parameters
+    (45, ("L114", "U104")),  # every model object of each launch file (checks._util.ir_objects)
 )
 # Rules that ask those memos about a few nodes only (lifecycle managers, the target of a
 # "ros2 param" command): they compute these few wherever they run.
 LIGHT_MEMO_USERS = frozenset({"P110", "S101", "S201", "S202"})
 
 # A static cost per rule: about its milliseconds on the real-workspace benchmark (1,180 files,
-# interfaces prefetched; S101 imports networkx only for a launch whose startup edges close a
-# cycle); a rule not listed costs DEFAULT_COST. Only the balance of the groups depends on these
-# numbers, never the findings.
+# interfaces prefetched, medians of four -j2 runs; S101 imports networkx only for a launch whose
+# startup edges close a cycle); a rule not listed costs DEFAULT_COST. Only the balance of the
+# groups depends on these numbers, never the findings.
 RULE_COST: dict[str, int] = {
-    "U101": 65, "L101": 62, "L106": 58, "U104": 42, "L114": 40, "U102": 32, "N106": 23, "L102": 19,
-    "U103": 17, "L002": 15, "N102": 14, "N105": 13, "T101": 11, "S101": 9, "L001": 9, "P103": 9,
-    "L108": 9, "N103": 7, "P101": 6, "L110": 6, "P106": 5,
+    "U101": 107, "L101": 101, "L106": 82, "P111": 78, "N104": 50, "P112": 42, "L102": 38, "U102": 30,
+    "N106": 28, "U104": 26, "U103": 23, "T104": 22, "N105": 22, "T102": 21, "L002": 21, "L114": 17,
+    "N102": 14, "L001": 13, "S101": 13, "T101": 12, "P107": 12, "L108": 12, "P105": 10, "P108": 10,
+    "T201": 8, "T203": 8, "P103": 8, "T202": 7, "L110": 6, "N103": 5, "L003": 5,
 }
 DEFAULT_COST = 3
 

@@ -91,7 +91,7 @@ def build_project(opts: CheckOptions, cwd: str | None = None, progress: Any = No
     cache = ParseCache.open(opts.cache)  # parse results, package reading, C++ extraction
     packages = ws.build_package_index(root, opts.distro, os.environ.get("AMENT_PREFIX_PATH"), scope,
                                       cache=cache)
-    from physai_lint.parallel import default_jobs, package_reads, resolve_entries
+    from physai_lint.parallel import default_jobs, interface_side, package_reads, resolve_entries
     from physai_lint.progress import Progress
 
     progress = progress or Progress(False)
@@ -124,10 +124,18 @@ def build_project(opts: CheckOptions, cwd: str | None = None, progress: Any = No
         progress.advance()
         return resolve_quiet(entry)
 
+    # The interfaces of the executables the parsed files name are extracted along with the
+    # resolution when that forks (parallel.interface_side); the rules' prefetch does the rest.
+    iface_diags: list[Diagnostic] = []
+    interfaces = _interfaces(opts, cwd, packages, iface_diags, cache)
+    files = len(store.launches) + len(store.params)
+    side = interface_side(interfaces, _named_interface_keys(store.launches.values()), jobs, files) \
+        if interfaces is not None else None
+
     def resolve_many(entries: list[str], leaves: bool) -> list[Any]:
         # with --jobs, forked helpers take a share (physai_lint/parallel.py)
         return resolve_entries(entries, resolve_quiet, store, loader, jobs, progress,
-                               files=len(store.launches) + len(store.params), leaves=leaves)
+                               files=files, leaves=leaves, side=None if leaves else side)
 
     progress.stage("resolving", len(launch_files))
     launches = choose_roots(launch_files, loader, resolve, progress.advance, resolve_many,
@@ -140,7 +148,7 @@ def build_project(opts: CheckOptions, cwd: str | None = None, progress: Any = No
             targets.update(_param_sources(r))
     param_models = _load_params(store, sorted(set(found.param_files) | _all_param_sources(launches)),
                                 opts.distro, diagnostics)
-    interfaces = _interfaces(opts, cwd, packages, diagnostics, cache)
+    diagnostics.extend(iface_diags)
     # Packages are read when first asked for; the checked ones are read here, for their problems.
     if hasattr(packages, "read_packages_holding"):
         packages.read_packages_holding(targets)
@@ -227,6 +235,31 @@ def run_checks(project: Project, opts: CheckOptions, progress: Any = None) -> li
     if project.interfaces is not None:
         prefetch_interfaces(project.interfaces, _interface_keys(project.launches), jobs, files)
     return run_rules(rules, run_one, jobs, progress, files=files)
+
+
+def _named_interface_keys(launch_files: Any) -> list[tuple[str, str]]:
+    """(package, executable or plugin) that parsed launch files give nodes literally: the keys
+    ``_interface_keys`` will most likely list once they are resolved."""
+    from physai_lint.model import launch as ir
+    from physai_lint.model.values import literal_of
+    from physai_lint.resolve.roots import actions_of
+
+    out = []
+    for lf in launch_files:
+        for a in actions_of(lf):
+            comps: tuple[Any, ...] = ()
+            if isinstance(a, ir.NodeAction):
+                pkg, exe = literal_of(a.package), literal_of(a.executable)
+                if pkg and exe:
+                    out.append((pkg, exe))
+                comps = a.composable_nodes
+            elif isinstance(a, ir.LoadComposableNodes):
+                comps = a.nodes
+            for c in comps:
+                pkg, plugin = literal_of(c.package), literal_of(c.plugin)
+                if pkg and plugin:
+                    out.append((pkg, plugin))
+    return out
 
 
 def _interface_keys(launches: list[Any]) -> list[tuple[str, str]]:

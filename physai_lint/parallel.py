@@ -521,7 +521,8 @@ MIN_FORK_LEAVES = 512
 
 
 def resolve_entries(entries: Sequence[str], resolve: Any, store: Any, load: Any, jobs: int,
-                    progress: Any = None, files: int = 0, leaves: bool = False) -> list[Any]:
+                    progress: Any = None, files: int = 0, leaves: bool = False,
+                    side: Side | None = None) -> list[Any]:
     """``[resolve(e) for e in entries]``, in the order of ``entries``.
 
     With more than one job, a platform that forks, at least ``MIN_FORK_FILES`` parsed ``files``
@@ -533,7 +534,7 @@ def resolve_entries(entries: Sequence[str], resolve: Any, store: Any, load: Any,
     ends as a serial run leaves it. Entries resolve independently of each other (each has its own
     ``Instantiator``; the module caches are keyed by content), so the results are those of the
     serial loop. An entry a helper took but whose result does not come back whole is resolved
-    here."""
+    here. ``side``: other items shared in the same fork when it forks (``Side``), marked done."""
     entries = list(entries)
     if len(entries) < (MIN_FORK_LEAVES if leaves else MIN_FORK_ENTRIES) or not _can_fork(jobs, files):
         out = []
@@ -542,11 +543,11 @@ def resolve_entries(entries: Sequence[str], resolve: Any, store: Any, load: Any,
                 progress.advance()
             out.append(resolve(entry))
         return out
-    return _resolve_shared(entries, resolve, store, load, progress, jobs - 1)
+    return _resolve_shared(entries, resolve, store, load, progress, jobs - 1, side)
 
 
 def _resolve_shared(entries: list[str], resolve: Any, store: Any, load: Any, progress: Any,
-                    helpers: int) -> list[Any]:
+                    helpers: int, side: Side | None = None) -> list[Any]:
     # What resolution imports on first use, imported once here for the helpers to inherit.
     from importlib import import_module
 
@@ -575,7 +576,25 @@ def _resolve_shared(entries: list[str], resolve: Any, store: Any, load: Any, pro
             progress.advance()
         return True
 
-    share_values(n, local, compute, take, helpers)
+    remote, accept = _value_io(compute, take)
+    extra = 0
+    if side is not None and not side.done:
+        side.done, extra = True, side.n
+        side_remote, side_accept = _value_io(side.compute, side.take)
+
+    def local_or_side(k: int) -> None:
+        if k >= n:
+            side.local(k - n)  # type: ignore[union-attr]
+        else:
+            local(k)
+
+    def remote_or_side(k: int) -> bytes | None:
+        return side_remote(k - n) if k >= n else remote(k)
+
+    def accept_or_side(k: int, data: bytes) -> bool:
+        return bool(side_accept(k - n, data)) if k >= n else bool(accept(k, data))
+
+    share(n + extra, local_or_side, remote_or_side, accept_or_side, helpers)
     return results
 
 
@@ -628,15 +647,30 @@ def prefetch_interfaces(interfaces: Any, keys: Sequence[tuple[str, str]], jobs: 
     inherit the filled store, so those rules no longer need to run in one process. Items are whole
     packages (executables of a package share sources and their tokens); a helper sends back each
     package's interfaces pickled, which ``interfaces.prime`` takes as if asked here. An interface is
-    a pure function of the package index and the sources, so the rules see the same values."""
+    a pure function of the package index and the sources, so the rules see the same values.
+    Keys already extracted (``interface_side``) are left out."""
+    side = interface_side(interfaces, keys, jobs, files)
+    if side is not None:
+        side.run()
+
+
+def interface_side(interfaces: Any, keys: Sequence[tuple[str, str]], jobs: int, files: int = 0
+                   ) -> Side | None:
+    """``prefetch_interfaces`` as items to share (``Side``): the resolution share takes them along
+    (``resolve_entries``), with the keys the parsed launch files name; the helpers, working from the
+    back, extract them first while this process resolves. A package's interfaces are about 3 kB to
+    send back for 5-30 ms of extraction, a resolved entry ~100-300 kB for the same time: the
+    helpers resolve fewer entries, fewer bytes travel, and the rules' own prefetch (one more fork
+    and wait) is left with the keys nobody predicted. None below the conditions of a fork."""
     if not _can_fork(jobs, files):
-        return
+        return None
     by_package: dict[str, list[tuple[str, str]]] = {}
     for key in sorted(set(keys)):
-        by_package.setdefault(key[0], []).append(key)
+        if not interfaces.cached(key):
+            by_package.setdefault(key[0], []).append(key)
     items = list(by_package.values())
     if len(items) < MIN_FORK_PACKAGES:
-        return
+        return None
 
     def local(i: int) -> None:
         for package, executable in items[i]:
@@ -649,7 +683,7 @@ def prefetch_interfaces(interfaces: Any, keys: Sequence[tuple[str, str]], jobs: 
             interfaces.prime(key, value)
         return True
 
-    share_values(len(items), local, lambda i: [interfaces.get(p, e) for p, e in items[i]], take, jobs - 1)
+    return Side(len(items), local, lambda i: [interfaces.get(p, e) for p, e in items[i]], take, jobs - 1)
 
 
 # ---- sharing a list of items with forked helpers --------------------------------------------------
@@ -682,8 +716,8 @@ def _value_io(compute: Any, take: Any) -> tuple[Any, Any]:
 
 
 class Side:
-    """Items to share (``share_values``) that may ride along with another share: ``map_jobs`` takes
-    them into its fork when it forks, which saves a fork, its copy-on-write faults and a wait for
+    """Items to share (``share_values``) that may ride along with another share: ``map_jobs`` and
+    ``resolve_entries`` take them into their fork when they fork, which saves a fork, its copy-on-write faults and a wait for
     the slower process; ``run`` does them alone otherwise. ``done`` once either has."""
 
     def __init__(self, n: int, local: Any, compute: Any, take: Any, helpers: int) -> None:

@@ -40,6 +40,9 @@ class _Interfaces:
     def prime(self, key: tuple[str, str], value: Any) -> None:
         self.primed.setdefault(key, value)
 
+    def cached(self, key: tuple[str, str]) -> bool:
+        return key in self.primed or key in self.asked
+
 
 @forks
 def test_interfaces_are_computed_on_both_sides_and_primed_here(low_thresholds: None) -> None:
@@ -150,3 +153,43 @@ def test_interface_keys_are_the_active_non_process_nodes() -> None:
                  N("node", None, "d", "w"), N("node", True, None, "v"), N("component", True, "e", "P"))
 
     assert _interface_keys([R()]) == [("a", "x"), ("d", "w"), ("e", "P")]
+
+
+@forks
+def test_interfaces_ride_along_with_the_resolution_share(low_thresholds: None,
+                                                         monkeypatch: pytest.MonkeyPatch) -> None:
+    """``interface_side`` taken by ``resolve_entries``: the helper, working from the back, extracts
+    interfaces first; every key is computed once, every entry resolved in order."""
+    monkeypatch.setattr(parallel, "MIN_FORK_ENTRIES", 2)
+    keys = [(f"pkg{i:02d}", "a") for i in range(20)]
+    store = _Interfaces()
+    side = parallel.interface_side(store, keys, 2, files=0)
+    assert side is not None and not side.done
+
+    class _Files:
+        launches: dict[str, Any] = {}
+
+    def resolve(entry: str) -> Any:
+        time.sleep(0.003)
+        return (entry, os.getpid())
+
+    entries = [f"e{i:02d}" for i in range(20)]
+    out = parallel.resolve_entries(entries, resolve, _Files(), lambda p: None, 2, side=side)
+    assert side.done
+    assert [e for e, _ in out] == entries
+    here = set(store.asked)
+    assert set(store.primed) | here == set(keys) and not set(store.primed) & here
+    assert store.primed, "the helper extracted nothing"
+
+
+@forks
+def test_keys_already_extracted_are_not_shared_again(low_thresholds: None) -> None:
+    keys = [(f"pkg{i:02d}", "a") for i in range(12)]
+    store = _Interfaces()
+    for key in keys[:5]:
+        store.get(*key)
+    side = parallel.interface_side(store, keys, 2, files=0)
+    assert side is not None and side.n == 7
+    store.asked.clear()
+    side.run()
+    assert not set(store.asked) & set(keys[:5]) and not set(store.primed) & set(keys[:5])

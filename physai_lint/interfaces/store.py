@@ -324,6 +324,10 @@ class InterfaceStore:
         self._cache[key] = result
         return result
 
+    def cached(self, key: Key) -> bool:
+        """Whether ``get(*key)`` has been computed (here, or taken from a helper by ``prime``)."""
+        return key in self._cache
+
     def prime(self, key: Key, value: NodeInterface | None) -> None:
         """Take ``get(*key)`` as computed elsewhere (a forked helper: ``parallel.prefetch_interfaces``)."""
         self._cache.setdefault(key, value)

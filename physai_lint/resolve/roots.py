@@ -28,7 +28,7 @@ from physai_lint.model import launch as ir
 from physai_lint.model import values as v
 
 
-def _actions(lf: Any) -> Iterator[ir.Action]:
+def actions_of(lf: Any) -> Iterator[ir.Action]:
     """Every action of a parsed file, in groups, timers, handlers and opaque bodies too."""
     stack = list(lf.actions) if lf is not None else []
     while stack:
@@ -39,7 +39,7 @@ def _actions(lf: Any) -> Iterator[ir.Action]:
 
 def has_include(lf: Any) -> bool:
     """Whether a parsed launch file has an include action anywhere."""
-    return any(isinstance(a, ir.Include) for a in _actions(lf))
+    return any(isinstance(a, ir.Include) for a in actions_of(lf))
 
 
 def _last_text(value: Any) -> str | None:
@@ -71,7 +71,7 @@ def included_targets(lf: Any) -> set[tuple[str | None, str]]:
     """(package or None, file name) of this file's include actions whose last part is literal;
     the package where the path starts with a literal ``find-pkg`` of one."""
     out = set()
-    for a in _actions(lf):
+    for a in actions_of(lf):
         if isinstance(a, ir.Include):
             tail = _last_text(a.path)
             if tail:

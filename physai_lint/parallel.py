@@ -84,15 +84,8 @@ def _forked_jobs(jobs: list[Any], helpers: int, progress: Any, side: Side | None
     # The helpers work from the back: give them the jobs whose results are cheapest to send back
     # for the parsing they save (``_TRAVEL_ORDER``); results still come out in input order.
     order = sorted(range(m), key=lambda i: _travel_rank(jobs[i]))
-    extra = 0
-    if side is not None and not side.done:
-        side.done, extra = True, side.n
-        side_remote, side_accept = _value_io(side.compute, side.take)
 
     def local(k: int) -> None:
-        if k >= m:
-            side.local(k - m)  # type: ignore[union-attr]
-            return
         i = order[k]
         value, cacheable = run_job(jobs[i], None)
         out[i] = (value, cacheable, None)
@@ -100,15 +93,11 @@ def _forked_jobs(jobs: list[Any], helpers: int, progress: Any, side: Side | None
             progress.advance()
 
     def remote(k: int) -> bytes | None:
-        if k >= m:
-            return side_remote(k - m)
         value, cacheable = run_job(jobs[order[k]], None)
         data = dumps(value)
         return None if data is None else (b"+" if cacheable else b"-") + data
 
     def accept(k: int, payload: bytes) -> bool:
-        if k >= m:
-            return side_accept(k - m, payload)
         data = payload[1:]
         value = loads(data)
         if value is None:
@@ -118,7 +107,7 @@ def _forked_jobs(jobs: list[Any], helpers: int, progress: Any, side: Side | None
             progress.advance()
         return True
 
-    share(m + extra, local, remote, accept, helpers)
+    _share_with_side(m, local, remote, accept, helpers, side)
     yield from out  # type: ignore[misc]  # every item is filled by share
 
 
@@ -576,25 +565,7 @@ def _resolve_shared(entries: list[str], resolve: Any, store: Any, load: Any, pro
             progress.advance()
         return True
 
-    remote, accept = _value_io(compute, take)
-    extra = 0
-    if side is not None and not side.done:
-        side.done, extra = True, side.n
-        side_remote, side_accept = _value_io(side.compute, side.take)
-
-    def local_or_side(k: int) -> None:
-        if k >= n:
-            side.local(k - n)  # type: ignore[union-attr]
-        else:
-            local(k)
-
-    def remote_or_side(k: int) -> bytes | None:
-        return side_remote(k - n) if k >= n else remote(k)
-
-    def accept_or_side(k: int, data: bytes) -> bool:
-        return bool(side_accept(k - n, data)) if k >= n else bool(accept(k, data))
-
-    share(n + extra, local_or_side, remote_or_side, accept_or_side, helpers)
+    _share_with_side(n, local, *_value_io(compute, take), helpers, side)
     return results
 
 
@@ -729,6 +700,30 @@ class Side:
         if not self.done:
             self.done = True
             share_values(self.n, self.local, self.compute, self.take, self.helpers)
+
+
+def _share_with_side(n: int, local: Any, remote: Any, accept: Any, helpers: int, side: Side | None) -> None:
+    """``share`` of items ``0..n-1`` followed by the items of ``side`` (unless done; marked done):
+    the helpers, working from the back, do the side's first."""
+    if side is None or side.done:
+        share(n, local, remote, accept, helpers)
+        return
+    side.done = True
+    side_remote, side_accept = _value_io(side.compute, side.take)
+
+    def local_or_side(k: int) -> None:
+        if k >= n:
+            side.local(k - n)
+        else:
+            local(k)
+
+    def remote_or_side(k: int) -> bytes | None:
+        return side_remote(k - n) if k >= n else remote(k)  # type: ignore[no-any-return]
+
+    def accept_or_side(k: int, data: bytes) -> bool:
+        return bool(side_accept(k - n, data) if k >= n else accept(k, data))
+
+    share(n + side.n, local_or_side, remote_or_side, accept_or_side, helpers)
 
 
 def share(n: int, local: Any, remote: Any, accept: Any, helpers: int) -> None:

@@ -1,20 +1,20 @@
-"""``--jobs``: share parsing and resolution with forked helpers, run groups of rules in forked
-processes.
+"""``--jobs``: share parsing, resolution and the rules with forked helpers.
 
-Parsing (``map_jobs``) and resolution (``resolve_entries``) take items from both ends of a list
-(``share``): this process from the front, ``jobs - 1`` forked helpers from the back; the helpers'
-results come back pickled and are put in their places, so the list is the serial loop's. Where
-forking is unsafe (macOS, a threaded process), parsing uses a process pool instead and resolution
-stays serial.
+Parsing (``map_jobs``), resolution (``resolve_entries``) and the rules (``run_rules``) take items
+from both ends of a list (``share``): this process from the front, ``jobs - 1`` forked helpers
+from the back; the helpers' results come back pickled and are put in their places, so the list is
+the serial loop's. Where forking is unsafe (macOS, a threaded process), parsing uses a process
+pool instead and resolution and the rules stay serial.
 
 A helper costs a fork and a pickle round trip per item, so small runs (the pre-commit case) stay
 in this process: below ``MIN_PARALLEL_FILES`` files to parse, or with one job, nothing is started.
 Output never depends on the number of jobs: results are returned in the order of the input, and
 the caller merges them in that order.
 
-The rules (``run_rules``) run once the project is built: groups of them in forked children that
-inherit it copy-on-write and send back only their findings, from ``MIN_FORK_FILES`` parsed files
-on; the findings are put back in rule order, so the list is the one a loop over the rules gives.
+The rules run once the project is built, in units (the rules of a shared memo together) shared
+with helpers that inherit it copy-on-write and send back only their findings, from
+``MIN_FORK_FILES`` parsed files on; the findings are put back in rule order, so the list is the
+one a loop over the rules gives.
 """
 from __future__ import annotations
 
@@ -221,23 +221,23 @@ def _work_chunk(chunk: list[Any]) -> list[tuple[bytes | None, bool]]:
     return out
 
 
-# ---- the rules: groups of rules in forked processes -------------------------------------------
+# ---- the rules: units of rules shared with forked helpers --------------------------------------
 
 # Below this many parsed files (launch and parameter files) the rules run in this process: the
 # fork, the copy-on-write faults and a process that may wait for a CPU cost about what a second
-# process saves. Measured on 2 CPUs, each group alone in a fork (synthetic workspaces; serial ->
-# slower group): 16 files 28 -> 20 ms, 32 files 37 -> 25 ms, 64 files 65 -> 38 ms, 128 files
+# process saves. Measured on 2 CPUs, each half of the rules in a fork (synthetic workspaces; serial ->
+# slower half): 16 files 28 -> 20 ms, 32 files 37 -> 25 ms, 64 files 65 -> 38 ms, 128 files
 # 106 -> 49 ms; forking costs 2-9 ms (30-130 MB processes). A one-file run (its includes and
 # parameter files) stays under it. PHYSAI_LINT_FORK_MIN_FILES overrides it (tests lower it).
 MIN_FORK_FILES = 64
 FORK_MIN_ENV = "PHYSAI_LINT_FORK_MIN_FILES"
 
-# Rules that fill or read the same memo run in the same process (else each process builds it):
+# Rules that fill or read the same memo form one unit, run in one process (else each builds it):
 # - checks/topics.graphs: the topic graphs of every launch (ctx.options["_graphs"]);
 # - checks/_params.effective: the effective parameters of each node (ctx.options["_effective"]).
 # The node interfaces (ctx.interfaces: the C++ and Python sources of an executable, extracted the
 # first time a node of it is asked about), which both families ask for, are extracted before the
-# groups fork (``prefetch_interfaces``), so the two families can run in different processes.
+# rules are shared (``prefetch_interfaces``), so the two families can run in different processes.
 # Cheap memos are built again in each process instead: package manifests read on first use
 # (ctx.packages), close-match suggestions and parameter typing (module lru_caches).
 # A rule missing from here is still right, only slower: it builds what it needs itself.
@@ -253,8 +253,8 @@ LIGHT_MEMO_USERS = frozenset({"P110", "S101", "S201", "S202"})
 
 # A static cost per rule: about its milliseconds on the real-workspace benchmark (1,180 files,
 # interfaces prefetched, medians of four -j2 runs; S101 imports networkx only for a launch whose
-# startup edges close a cycle); a rule not listed costs DEFAULT_COST. Only the balance of the
-# groups depends on these numbers, never the findings.
+# startup edges close a cycle); a rule not listed costs DEFAULT_COST. Only the order of the
+# units (and so the balance of the processes) depends on these numbers, never the findings.
 RULE_COST: dict[str, int] = {
     "U101": 107, "L101": 101, "L106": 82, "P111": 78, "N104": 50, "P112": 42, "L102": 38, "U102": 30,
     "N106": 28, "U104": 26, "U103": 23, "T104": 22, "N105": 22, "T102": 21, "L002": 21, "L114": 17,
@@ -271,11 +271,10 @@ def _fork_min_files() -> int:
         return MIN_FORK_FILES
 
 
-def plan_groups(codes: Sequence[str], workers: int) -> list[list[int]]:
-    """Split rules (by their codes, in run order) into at most ``workers`` groups of indexes into
-    ``codes``: the rules of a shared memo together, groups balanced by static cost (longest unit
-    first onto the lightest group), no more groups than lower the cost of the heaviest one. The
-    heaviest group comes first (the caller runs it itself); each group keeps the run order."""
+def plan_units(codes: Sequence[str]) -> list[list[int]]:
+    """Rules (by their codes, in run order) as units of indexes into ``codes``: the rules of a
+    shared memo together, each other rule alone; heaviest first by static cost (ties: run order),
+    each unit in run order."""
     units: dict[Any, list[int]] = {}
     memo_cost: dict[Any, int] = {}
     family: dict[str, Any] = {}
@@ -286,22 +285,14 @@ def plan_groups(codes: Sequence[str], workers: int) -> list[list[int]]:
         units.setdefault(family.get(code, code), []).append(i)
     costed = sorted(((memo_cost.get(key, 0) + sum(RULE_COST.get(codes[i], DEFAULT_COST) for i in idx), idx)
                      for key, idx in units.items()), key=lambda u: (-u[0], u[1][0]))
+    return [idx for _, idx in costed]
 
-    def pack(n: int) -> list[tuple[int, list[int]]]:
-        bins: list[tuple[int, list[int]]] = [(0, []) for _ in range(n)]
-        for cost, idx in costed:
-            k = min(range(n), key=lambda b: (bins[b][0], b))
-            bins[k] = (bins[k][0] + cost, bins[k][1] + idx)
-        return [b for b in bins if b[1]]
 
-    best = pack(1)
-    for n in range(2, max(1, min(workers, len(costed))) + 1):
-        bins = pack(n)
-        # one more process only when it makes the heaviest group clearly lighter
-        if max(c for c, _ in bins) < 0.95 * max(c for c, _ in best):
-            best = bins
-    best.sort(key=lambda b: (-b[0], min(b[1])))
-    return [sorted(idx) for _, idx in best]
+def unit_cost(codes: Sequence[str], unit: Sequence[int]) -> int:
+    """The static cost of a unit of ``plan_units``."""
+    memo = {c: cost for cost, members in SHARED_MEMOS for c in members}
+    own = sum(RULE_COST.get(codes[i], DEFAULT_COST) for i in unit)
+    return own + max((memo.get(codes[i], 0) for i in unit), default=0)
 
 
 def run_rules(rules: Sequence[tuple[str, Any]], run_one: Any, jobs: int, progress: Any = None,
@@ -310,21 +301,65 @@ def run_rules(rules: Sequence[tuple[str, Any]], run_one: Any, jobs: int, progres
     the order of ``rules``: exactly what a loop over them returns.
 
     With more than one job, a platform that forks, and at least ``MIN_FORK_FILES`` parsed
-    ``files``, the rules are split into groups (``plan_groups``); each group but the first runs in
-    a forked child, which inherits the project copy-on-write and sends back only its pickled
-    findings, and this process runs the first. A child that dies, or whose findings do not come
-    back whole, has its group run again here: findings are never lost."""
-    groups = plan_groups([c for c, _ in rules], jobs) if _can_fork(jobs, files) else []
+    ``files``, the units of rules (``plan_units``) are shared (``share``) between this process,
+    which runs them heaviest first, and forked helpers, which inherit the project copy-on-write,
+    run them lightest first and send back only their pickled findings; no more helpers than the
+    heaviest unit leaves work for. Shared rather than split in fixed groups: a forked process runs
+    the same rules 1.3-1.6 times slower than this one (its first touch of each page of the project
+    is a copy-on-write fault, its CPU caches are cold), by an amount that moves with the machine,
+    so static costs left one process idle for 0.1-0.25 s of a 0.5-0.7 s stage. A helper that
+    dies, or whose findings do not come back whole, leaves its units to this process: findings
+    are never lost."""
+    codes = [c for c, _ in rules]
     results: list[list[Any] | None] = [None] * len(rules)
-    shown: set[int] = set()  # rules already counted on the progress bar
-    if len(groups) > 1:
-        shown = _run_forked(rules, run_one, groups, results, progress)
+    units = plan_units(codes) if _can_fork(jobs, files) else []
+    helpers = 0
+    if len(units) > 1:
+        costs = [unit_cost(codes, u) for u in units]
+        helpers = min(jobs - 1, len(units) - 1, max(1, sum(costs) // max(1, costs[0]) - 1))
+    if helpers > 0:
+        _share_rules(rules, run_one, units, results, progress, helpers)
     for i, (code, impl) in enumerate(rules):
-        if results[i] is None:  # not forked, or its child failed
-            if progress is not None and i not in shown:
+        if results[i] is None:  # not shared
+            if progress is not None:
                 progress.advance()
             results[i] = run_one(code, impl)
     return [d for found in results for d in found]  # type: ignore[union-attr]
+
+
+def _share_rules(rules: Sequence[tuple[str, Any]], run_one: Any, units: list[list[int]],
+                 results: list[list[Any] | None], progress: Any, helpers: int) -> None:
+    """``run_rules``'s units through ``share``: fills ``results`` for every rule."""
+    import pickle
+
+    def local(k: int) -> None:
+        for i in units[k]:
+            results[i] = run_one(*rules[i])
+            if progress is not None:
+                progress.advance()
+
+    def remote(k: int) -> bytes | None:
+        found = [run_one(*rules[i]) for i in units[k]]
+        try:
+            return pickle.dumps(found, protocol=pickle.HIGHEST_PROTOCOL)
+        except Exception:  # noqa: BLE001 - findings that cannot travel: this process runs the unit
+            return None
+
+    def accept(k: int, data: bytes) -> bool:
+        try:
+            found = pickle.loads(data)
+        except Exception:  # noqa: BLE001 - anything that does not load: run the unit here
+            return False
+        if not isinstance(found, list) or len(found) != len(units[k]) or \
+                not all(isinstance(f, list) for f in found):
+            return False
+        for i, f in zip(units[k], found):
+            results[i] = f
+            if progress is not None:
+                progress.advance()
+        return True
+
+    share(len(units), local, remote, accept, helpers)
 
 
 def _can_fork(jobs: int, files: int, least: int | None = None) -> bool:
@@ -338,114 +373,6 @@ def _can_fork(jobs: int, files: int, least: int | None = None) -> bool:
             and threading.active_count() == 1)  # forking a threaded process can deadlock the child
 
 
-class _Child:
-    """A forked child running one group: it writes b"+" per finished rule, then b"=" and the
-    pickled list of the group's findings per rule, and exits 0."""
-
-    def __init__(self, group: list[int], pid: int, fd: int) -> None:
-        self.group, self.pid, self.fd = group, pid, fd
-        self.data = bytearray()
-        self.done = 0  # rules the child said it finished
-        self.eof = False
-        self.status: int | None = None  # its wait status, once reaped
-
-    def read(self, progress: Any) -> None:
-        """Whatever the child has written so far, without blocking."""
-        while not self.eof:
-            try:
-                chunk = os.read(self.fd, 1 << 20)
-            except BlockingIOError:
-                return
-            except OSError:
-                chunk = b""
-            if not chunk:
-                self.eof = True
-                os.close(self.fd)
-                return
-            if len(self.data) == self.done:  # still in the b"+" prefix
-                plus = len(chunk) - len(chunk.lstrip(b"+"))
-                self.done += plus
-                if progress is not None and plus:
-                    progress.advance(plus)
-            self.data += chunk
-
-    def reap(self, kill: bool = False) -> None:
-        if self.status is not None:
-            return
-        try:
-            if kill:
-                import signal
-
-                os.kill(self.pid, signal.SIGKILL)
-            self.status = os.waitpid(self.pid, 0)[1]
-        except OSError:
-            self.status = -1
-        if not self.eof:
-            self.eof = True
-            os.close(self.fd)
-
-    def findings(self) -> list[list[Any]] | None:
-        """The child's findings per rule of its group, or None when they did not come back whole."""
-        import pickle
-
-        self.reap()
-        body = bytes(self.data[self.done:])
-        if self.status != 0 or self.done != len(self.group) or body[:1] != b"=":
-            return None
-        try:
-            value = pickle.loads(body[1:])
-        except Exception:  # noqa: BLE001 - anything that does not load: run the group here
-            return None
-        if not isinstance(value, list) or len(value) != len(self.group) or \
-                not all(isinstance(found, list) for found in value):
-            return None
-        return value
-
-
-def _run_forked(rules: Sequence[tuple[str, Any]], run_one: Any, groups: list[list[int]],
-                results: list[list[Any] | None], progress: Any) -> set[int]:
-    """Groups 1.. in forked children, group 0 here; fills ``results`` with what came back whole
-    (the caller runs the rest) and returns the rules already counted on the progress bar."""
-    import selectors
-
-    children: list[_Child] = []
-    shown: set[int] = set()
-    thaw = _freeze_gc()
-    try:
-        for group in groups[1:]:
-            child = _fork(rules, run_one, group)
-            if child is not None:
-                children.append(child)
-        for i in groups[0]:
-            if progress is not None:
-                progress.advance()
-            shown.add(i)
-            results[i] = run_one(*rules[i])
-            for child in children:
-                child.read(progress)
-        with selectors.DefaultSelector() as sel:
-            for child in children:
-                if not child.eof:
-                    sel.register(child.fd, selectors.EVENT_READ, child)
-            while sel.get_map():
-                for key, _ in sel.select():
-                    child = key.data
-                    child.read(progress)
-                    if child.eof:
-                        sel.unregister(key.fileobj)
-        for child in children:
-            shown.update(child.group[:child.done])
-            found = child.findings()
-            if found is not None:
-                for i, f in zip(child.group, found):
-                    results[i] = f
-    finally:
-        for child in children:
-            child.reap(kill=child.status is None and not child.eof)  # interrupted: stop them
-        thaw()
-    return shown
-
-
 def _freeze_gc() -> Any:
     """Freeze the objects alive now (unless the caller already has): a forked process's collector
     never visits them, so their pages stay shared instead of being copied by a collection.
@@ -457,44 +384,6 @@ def _freeze_gc() -> Any:
     gc.freeze()
     return gc.unfreeze
 
-
-def _fork(rules: Sequence[tuple[str, Any]], run_one: Any, group: list[int]) -> _Child | None:
-    try:
-        r, w = os.pipe()
-    except OSError:
-        return None
-    try:
-        pid = os.fork()
-    except OSError:
-        os.close(r)
-        os.close(w)
-        return None
-    if pid == 0:  # the child: never returns
-        _child(rules, run_one, group, r, w)
-    os.close(w)
-    os.set_blocking(r, False)
-    return _Child(group, pid, r)
-
-
-def _child(rules: Sequence[tuple[str, Any]], run_one: Any, group: list[int], r: int, w: int) -> None:
-    status = 1
-    try:
-        import pickle
-
-        os.close(r)
-        found = []
-        for i in group:
-            found.append(run_one(*rules[i]))
-            os.write(w, b"+")
-        data = b"=" + pickle.dumps(found, protocol=pickle.HIGHEST_PROTOCOL)
-        view = memoryview(data)
-        while view:
-            view = view[os.write(w, view):]
-        status = 0
-    except BaseException:  # noqa: BLE001, S110 - the parent runs the group again
-        pass
-    finally:
-        os._exit(status)
 
 
 # ---- resolution: entries shared with forked helpers ---------------------------------------------
@@ -614,7 +503,7 @@ def prefetch_interfaces(interfaces: Any, keys: Sequence[tuple[str, str]], jobs: 
 
     Extracting the interfaces of the executables that nodes run (their C++ and Python sources) is
     about half of the rules' time on a large workspace, and every rule that compares topics or
-    parameters with declarations asks for them: done here on every CPU, the forked rule groups
+    parameters with declarations asks for them: done here on every CPU, the rules' forked helpers
     inherit the filled store, so those rules no longer need to run in one process. Items are whole
     packages (executables of a package share sources and their tokens); a helper sends back each
     package's interfaces pickled, which ``interfaces.prime`` takes as if asked here. An interface is
@@ -642,19 +531,34 @@ def interface_side(interfaces: Any, keys: Sequence[tuple[str, str]], jobs: int, 
     items = list(by_package.values())
     if len(items) < MIN_FORK_PACKAGES:
         return None
+    index: Any = getattr(interfaces, "packages", None)
+    adopts = hasattr(index, "unread") and hasattr(index, "adopt_package")
 
     def local(i: int) -> None:
         for package, executable in items[i]:
             interfaces.get(package, executable)
 
-    def take(i: int, values: Any) -> bool:
-        if not isinstance(values, list) or len(values) != len(items[i]):
+    def compute(i: int) -> tuple[list[Any], Any]:
+        # Extraction reads the package (its build rules name the sources): sent back too, else
+        # the rules read it again (U102 asks for its executables), in whichever process runs them.
+        package = items[i][0][0]
+        read = index.read_package_elsewhere(package) if adopts and index.unread(package) else None
+        return [interfaces.get(p, e) for p, e in items[i]], read
+
+    def take(i: int, value: Any) -> bool:
+        if not isinstance(value, tuple) or len(value) != 2:
             return False
-        for key, value in zip(items[i], values):
-            interfaces.prime(key, value)
+        values, read = value
+        if not isinstance(values, list) or len(values) != len(items[i]) or \
+                not (read is None or isinstance(read, tuple) and len(read) == 3):
+            return False
+        for key, one in zip(items[i], values):
+            interfaces.prime(key, one)
+        if read is not None:
+            index.adopt_package(items[i][0][0], read)
         return True
 
-    return Side(len(items), local, lambda i: [interfaces.get(p, e) for p, e in items[i]], take, jobs - 1)
+    return Side(len(items), local, compute, take, jobs - 1)
 
 
 # ---- sharing a list of items with forked helpers --------------------------------------------------
@@ -773,7 +677,9 @@ def share(n: int, local: Any, remote: Any, accept: Any, helpers: int) -> None:
                 local(i)
             return
         _put(shared, 0, 0)
-        _put(shared, 1, n)
+        # Helper h starts on item n-1-h, claimed for it before the forks: it does at least that
+        # one however late it gets a CPU (if its fork fails, this process does it at the end).
+        _put(shared, 1, n - len(fds))
         thaw = _freeze_gc()
         try:
             for h, fd in enumerate(fds):
@@ -782,7 +688,7 @@ def share(n: int, local: Any, remote: Any, accept: Any, helpers: int) -> None:
                 except OSError:
                     break
                 if pid == 0:  # a helper: never returns
-                    _helper(h, remote, shared, fd, lock)
+                    _helper(h, remote, shared, fd, lock, n - 1 - h)
                 pids.append(pid)
             _share_here(n, local, accept, shared, fds[:len(pids)], pids)  # waits for them all
         finally:
@@ -845,25 +751,23 @@ def _share_here(n: int, local: Any, accept: Any, shared: Any, fds: list[int], pi
             local(i)
 
 
-def _helper(h: int, remote: Any, shared: Any, fd: int, lock: int | None) -> None:
-    """In forked helper ``h``: claim items from the back, write (index, size, bytes) frames to
-    ``fd``, publish the bytes written after each one."""
+def _helper(h: int, remote: Any, shared: Any, fd: int, lock: int | None, first: int) -> None:
+    """In forked helper ``h``: item ``first`` (claimed for it), then items claimed from the back;
+    write (index, size, bytes) frames to ``fd``, publish the bytes written after each one."""
     status = 1
     try:
         written = 0
-        while True:
-            i = _claim_back(shared, lock)
-            if i is None:
-                break
+        i: int | None = first
+        while i is not None:
             data = remote(i)
-            if data is None:  # cannot travel: the parent does this one itself
-                continue
-            frame = _FRAME.pack(i, len(data)) + data
-            view = memoryview(frame)
-            while view:
-                view = view[os.write(fd, view):]
-            written += len(frame)
-            _put(shared, 2 + h, written)
+            if data is not None:  # else it cannot travel: the parent does this one itself
+                frame = _FRAME.pack(i, len(data)) + data
+                view = memoryview(frame)
+                while view:
+                    view = view[os.write(fd, view):]
+                written += len(frame)
+                _put(shared, 2 + h, written)
+            i = _claim_back(shared, lock)
         status = 0
     except BaseException:  # noqa: BLE001, S110 - the parent does what did not come back
         pass

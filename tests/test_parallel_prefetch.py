@@ -193,3 +193,23 @@ def test_keys_already_extracted_are_not_shared_again(low_thresholds: None) -> No
     store.asked.clear()
     side.run()
     assert not set(store.asked) & set(keys[:5]) and not set(store.primed) & set(keys[:5])
+
+
+@forks
+def test_a_package_read_for_its_interfaces_in_the_helper_arrives_read_here(low_thresholds: None,
+                                                                          tmp_path: Path) -> None:
+    """Extraction reads the package (its build rules name the sources); the rules ask for its
+    executables later, so the helper's reading comes back with the interfaces."""
+    from physai_lint.interfaces.store import InterfaceStore
+
+    _workspace(tmp_path, 12)
+    shared, serial = _index(tmp_path), _index(tmp_path)
+    keys = [(f"pkg{i:02d}", f"node{i}") for i in range(12)]
+    store = InterfaceStore(shared)
+    parallel.prefetch_interfaces(store, keys, 2, files=0)
+    for key in keys:
+        InterfaceStore(serial).get(*key)
+    assert sorted(shared.packages._read) == sorted(serial.packages._read) == [p for p, _ in keys]
+    for name, pkg in serial.packages._read.items():
+        assert shared.packages._read[name] == pkg
+    assert sorted(shared.problems) == sorted(serial.problems) and serial.problems

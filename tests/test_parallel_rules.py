@@ -67,18 +67,18 @@ def forks(monkeypatch: pytest.MonkeyPatch) -> list[int]:
 
 @pytest.fixture
 def extra_rules(monkeypatch: pytest.MonkeyPatch) -> Iterator[dict[str, Any]]:
-    """Register test rules for one test; each runs in a child (the last group)."""
+    """Register test rules for one test; they run in a helper (the last unit, which the helper is
+    given before it forks)."""
     added: dict[str, Any] = {}
-    real_plan = parallel.plan_groups
+    real_plan = parallel.plan_units
 
-    def plan(codes: list[str], workers: int) -> list[list[int]]:
-        groups = real_plan(codes, workers)
+    def plan(codes: list[str]) -> list[list[int]]:
+        units = real_plan(codes)
         mine = [i for i, c in enumerate(codes) if c in added]
-        groups = [[i for i in g if i not in mine] for g in groups]
-        groups[-1] = sorted(groups[-1] + mine)
-        return [g for g in groups if g]
+        units = [[i for i in u if i not in mine] for u in units]
+        return [u for u in units if u] + ([mine] if mine else [])
 
-    monkeypatch.setattr(parallel, "plan_groups", plan)
+    monkeypatch.setattr(parallel, "plan_units", plan)
     yield added
     for code in added:
         base.REGISTRY.pop(code, None)
@@ -186,17 +186,36 @@ def test_forks_only_from_the_size_threshold_on(project: Any, monkeypatch: pytest
     assert calls
 
 
-def test_groups_keep_shared_memos_together_and_cover_every_rule_once() -> None:
+def test_units_keep_shared_memos_together_and_cover_every_rule_once() -> None:
     codes = sorted(base.load_all())
-    for workers in range(1, 9):
-        groups = parallel.plan_groups(codes, workers)
-        assert 1 <= len(groups) <= workers
-        assert sorted(i for g in groups for i in g) == list(range(len(codes)))
-        assert all(g == sorted(g) for g in groups)
-        for _, members in parallel.SHARED_MEMOS:
-            assert len({k for k, g in enumerate(groups) for i in g if codes[i] in members}) == 1
-    assert len(parallel.plan_groups(codes, 2)) == 2
-    assert parallel.plan_groups(codes[:1], 4) == [[0]]
+    units = parallel.plan_units(codes)
+    assert sorted(i for u in units for i in u) == list(range(len(codes)))
+    assert all(u == sorted(u) for u in units)
+    for _, members in parallel.SHARED_MEMOS:
+        assert len({k for k, u in enumerate(units) for i in u if codes[i] in members}) == 1
+    costs = [parallel.unit_cost(codes, u) for u in units]
+    assert costs == sorted(costs, reverse=True)  # this process takes the heaviest first
+    assert parallel.plan_units(codes[:1]) == [[0]]
+
+
+def test_a_helper_does_its_first_item_however_late_it_starts(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The item given to a helper before its fork is done there, even when this process could
+    finish every other item before the helper gets a CPU."""
+    done_in: dict[int, int] = {}
+
+    def local(i: int) -> None:
+        done_in[i] = os.getpid()
+
+    def remote(i: int) -> bytes:
+        return str(os.getpid()).encode()
+
+    def accept(i: int, data: bytes) -> bool:
+        done_in[i] = int(data)
+        return True
+
+    parallel.share(50, local, remote, accept, 1)
+    assert sorted(done_in) == list(range(50))
+    assert done_in[49] != os.getpid()
 
 
 def _reaches(func: Any, names: set[str]) -> set[str]:

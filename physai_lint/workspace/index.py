@@ -289,6 +289,10 @@ class PackageIndex:
         pkg = self.packages.get(name)
         return pkg, self.problems[problems:], self.notes[notes:]
 
+    def unread(self, name: str) -> bool:
+        """Whether ``name`` is a workspace package that has not been read yet."""
+        return name in self.packages and name not in self.packages._read
+
     def adopt_package(self, name: str, read: tuple[Any, list[Any], list[Any]]) -> None:
         """Take what ``read_package_elsewhere`` returned as if the package had been read here."""
         pkg, problems, notes = read

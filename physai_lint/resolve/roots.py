@@ -166,14 +166,20 @@ def choose_roots(launch_files: list[str], load: Callable[[str], Any], resolve: C
     cyclic = nodes_on_cycles(graph)
     guessed = {q for p, qs in graph.items() if p not in cyclic for q in qs if q != p} - cyclic
     first = [p for p in includers if p not in guessed]
-    by_entry: dict[str, Any] = dict(zip(first, many(first, False)))
+    # Leaves that no includer names are almost surely entries of their own: resolved with the
+    # first wave (in front: with --jobs this process takes them, between the helpers' items),
+    # not alone after it; one that an unnamed include reaches is dropped below like any other.
+    names = {n for p in includers for _, n in included_targets(parsed[p])}
+    early = sorted(p for p in leaves if posixpath.basename(p) not in names)
+    wave = early + first
+    by_entry: dict[str, Any] = dict(zip(wave, many(wave, False)))
     included = {f for r in by_entry.values() for f in r.files[1:] if f != r.entry}
     for p in sorted(guessed):  # guesses that did not come true, includers by path
         if p in included:
             continue
         r = by_entry[p] = resolve(p)
         included.update(f for f in r.files[1:] if f != r.entry)
-    alone = sorted(leaves - included)
+    alone = sorted(leaves - included - by_entry.keys())
     by_entry.update(zip(alone, many(alone, True)))
     launches = [by_entry[p] for p in launch_files if p in by_entry and p not in included]
     if not launches:  # every file is included by another (include cycles): all of them are roots

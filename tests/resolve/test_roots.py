@@ -87,6 +87,26 @@ def test_a_root_outside_the_cycle_is_still_the_only_root(tmp_path, demo_package,
     assert resolved == ["a.launch.xml", "b.launch.xml", "top.launch.xml"]
 
 
+def test_a_leaf_reached_through_an_unnamed_include_is_still_no_root(tmp_path, demo_package, monkeypatch):
+    # Leaves that no include names by file name are resolved along with the first wave of
+    # includers; top reaches hidden.launch.xml through an argument, so hidden is resolved early
+    # (no include names it) but stays out of the roots, as without resolving it early.
+    files = {
+        "top.launch.xml": _launch('  <arg name="which" default="hidden.launch.xml"/>\n',
+                                  '  <include file="$(find-pkg-share demo)/launch/$(var which)"/>\n',
+                                  _node("top")),
+        "hidden.launch.xml": _launch(_node("hidden")),
+        "alone.launch.xml": _launch(_node("alone")),
+        "mid.launch.xml": _launch(_inc("named.launch.xml"), _node("mid")),
+        "named.launch.xml": _launch(_node("named")),
+    }
+    roots, resolved, project = _project(tmp_path, demo_package, monkeypatch, files)
+    assert roots == ["alone.launch.xml", "mid.launch.xml", "top.launch.xml"]
+    assert resolved == ["alone.launch.xml", "hidden.launch.xml", "mid.launch.xml", "top.launch.xml"]
+    top = next(r for r in project.launches if r.entry.endswith("/top.launch.xml"))
+    assert sorted(n.name for n in top.nodes) == ["hidden", "top"]
+
+
 def test_included_names_reads_the_literal_end_of_python_and_xml_paths(tmp_path, demo_package):
     from physai_lint.files import FileStore
 

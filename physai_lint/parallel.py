@@ -304,10 +304,11 @@ def run_rules(rules: Sequence[tuple[str, Any]], run_one: Any, jobs: int, progres
     ``files``, the units of rules (``plan_units``) are shared (``share``) between this process,
     which runs them heaviest first, and forked helpers, which inherit the project copy-on-write,
     run them lightest first and send back only their pickled findings; no more helpers than the
-    heaviest unit leaves work for. Shared rather than split in fixed groups: a forked process runs
-    the same rules 1.3-1.6 times slower than this one (its first touch of each page of the project
-    is a copy-on-write fault, its CPU caches are cold), by an amount that moves with the machine,
-    so static costs left one process idle for 0.1-0.25 s of a 0.5-0.7 s stage. A helper that
+    heaviest unit leaves work for. Shared rather than split in fixed groups: while both run, a
+    forked helper ran the same rules 1.3-1.6 times slower than this process (copy-on-write faults
+    on its first touch of each page, and a second CPU that gives more or less from one minute to
+    the next), so groups fixed by static costs left one process idle for 0.1-0.25 s of a
+    0.5-0.7 s stage. A helper that
     dies, or whose findings do not come back whole, leaves its units to this process: findings
     are never lost."""
     codes = [c for c, _ in rules]
@@ -385,7 +386,6 @@ def _freeze_gc() -> Any:
     return gc.unfreeze
 
 
-
 # ---- resolution: entries shared with forked helpers ---------------------------------------------
 
 # Below this many entries to resolve, they are resolved here: a launch entry resolves in 1-30 ms
@@ -404,8 +404,8 @@ def resolve_entries(entries: Sequence[str], resolve: Any, store: Any, load: Any,
     """``[resolve(e) for e in entries]``, in the order of ``entries``.
 
     With more than one job, a platform that forks, at least ``MIN_FORK_FILES`` parsed ``files``
-    and ``MIN_FORK_ENTRIES`` entries (``MIN_FORK_LEAVES`` when they are ``leaves``, entries that
-    include nothing), ``jobs - 1`` forked helpers resolve entries from the back of
+    and enough entries (``_enough_entries``: ``MIN_FORK_ENTRIES`` that include something, or
+    ``MIN_FORK_LEAVES`` in all), ``jobs - 1`` forked helpers resolve entries from the back of
     the list while this process resolves them from the front, until they meet (``share``); a helper
     sends each result back pickled, with the launch files it had to parse on the way
     (``store.launches`` gained them), which this process then ``load``s too, so that its file store
@@ -414,7 +414,7 @@ def resolve_entries(entries: Sequence[str], resolve: Any, store: Any, load: Any,
     serial loop. An entry a helper took but whose result does not come back whole is resolved
     here. ``side``: other items shared in the same fork when it forks (``Side``), marked done."""
     entries = list(entries)
-    if len(entries) < (MIN_FORK_LEAVES if leaves else MIN_FORK_ENTRIES) or not _can_fork(jobs, files):
+    if not _enough_entries(entries, store, leaves) or not _can_fork(jobs, files):
         out = []
         for entry in entries:
             if progress is not None:
@@ -422,6 +422,27 @@ def resolve_entries(entries: Sequence[str], resolve: Any, store: Any, load: Any,
             out.append(resolve(entry))
         return out
     return _resolve_shared(entries, resolve, store, load, progress, jobs - 1, side)
+
+
+def _enough_entries(entries: list[str], store: Any, leaves: bool) -> bool:
+    """Whether ``entries`` are worth a fork: ``MIN_FORK_LEAVES`` of them, or ``MIN_FORK_ENTRIES``
+    that include something (unless they are all ``leaves``; an entry not parsed yet counts as
+    one that includes). Leaves ride along with the includers (``resolve.roots.choose_roots``) but
+    do not make a fork worth it on their own."""
+    if len(entries) >= MIN_FORK_LEAVES:
+        return True
+    if leaves or len(entries) < MIN_FORK_ENTRIES:
+        return False
+    from physai_lint.resolve.roots import has_include
+
+    parsed = getattr(store, "launches", {})
+    heavy = 0
+    for entry in entries:
+        lf = parsed.get(entry)
+        heavy += lf is None or has_include(lf)
+        if heavy >= MIN_FORK_ENTRIES:
+            return True
+    return False
 
 
 def _resolve_shared(entries: list[str], resolve: Any, store: Any, load: Any, progress: Any,

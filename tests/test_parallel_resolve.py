@@ -171,3 +171,36 @@ def test_without_a_scratch_file_everything_is_resolved_here(low_thresholds: None
     entries = [f"e{i}" for i in range(20)]
     out = parallel.resolve_entries(entries, _toy(store), store, lambda p: None, 2)
     assert out == [(e, os.getpid()) for e in entries]
+
+
+@forks
+def test_leaves_riding_with_includers_do_not_make_a_fork(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+    """The first wave of resolution carries the leaves no include names (resolve.roots): they
+    resolve in a fraction of a millisecond, so only the includers count towards a fork."""
+    from physai_lint.files import FileStore
+
+    monkeypatch.setenv(parallel.FORK_MIN_ENV, "0")
+    monkeypatch.setattr(parallel, "MIN_FORK_ENTRIES", 4)
+    store = FileStore()
+    leaves, includers = [], []
+    for i in range(30):
+        leaf = tmp_path / f"leaf{i:02d}.launch.xml"
+        leaf.write_text('<launch><node pkg="demo" exec="talker"/></launch>\n')
+        leaves.append(str(leaf))
+    for i in range(4):
+        inc = tmp_path / f"inc{i}.launch.xml"
+        inc.write_text(f'<launch><include file="{leaves[i]}"/></launch>\n')
+        includers.append(str(inc))
+    for path in leaves + includers:
+        store.launch(path)
+
+    def resolve(entry: str) -> Any:
+        time.sleep(0.002)
+        return (entry, os.getpid())
+
+    wave = leaves + includers[:3]
+    out = parallel.resolve_entries(wave, resolve, store, lambda p: None, 2)
+    assert [e for e, _ in out] == wave and {pid for _, pid in out} == {os.getpid()}
+    wave = leaves + includers
+    out = parallel.resolve_entries(wave, resolve, store, lambda p: None, 2)
+    assert [e for e, _ in out] == wave and len({pid for _, pid in out}) == 2

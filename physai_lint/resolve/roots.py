@@ -162,14 +162,15 @@ def choose_roots(launch_files: list[str], load: Callable[[str], Any], resolve: C
                 yield q
 
     # The guess: which includers each includer names (itself included: a cycle of one).
-    graph = {p: {q for pkg, n in included_targets(parsed[p]) for q in named(pkg, n)} for p in includers}
+    targets = {p: included_targets(parsed[p]) for p in includers}
+    graph = {p: {q for pkg, n in targets[p] for q in named(pkg, n)} for p in includers}
     cyclic = nodes_on_cycles(graph)
     guessed = {q for p, qs in graph.items() if p not in cyclic for q in qs if q != p} - cyclic
     first = [p for p in includers if p not in guessed]
     # Leaves that no includer names are almost surely entries of their own: resolved with the
     # first wave (in front: with --jobs this process takes them, between the helpers' items),
     # not alone after it; one that an unnamed include reaches is dropped below like any other.
-    names = {n for p in includers for _, n in included_targets(parsed[p])}
+    names = {n for ts in targets.values() for _, n in ts}
     early = sorted(p for p in leaves if posixpath.basename(p) not in names)
     wave = early + first
     by_entry: dict[str, Any] = dict(zip(wave, many(wave, False)))

@@ -27,7 +27,7 @@ Rows (select with --rows, default all):
 
 Every time is the median of --runs whole-process runs (min-max shown), all from bytecode (see
 compile_everything). The two sides of a ratio take turns, one run each per round, except for the
-autoware and small rows. Nothing is asserted.
+small row. Nothing is asserted.
 """
 from __future__ import annotations
 

@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import os
 import time
+from collections.abc import Iterator
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -237,29 +238,29 @@ def run_checks(project: Project, opts: CheckOptions, progress: Any = None) -> li
     return run_rules(rules, run_one, jobs, progress, files=files)
 
 
-def _named_interface_keys(launch_files: Any) -> list[tuple[str, str]]:
+def _named_interface_keys(launch_files: Any) -> Iterator[tuple[str, str]]:
     """(package, executable or plugin) that parsed launch files give nodes literally: the keys
-    ``_interface_keys`` will most likely list once they are resolved."""
+    ``_interface_keys`` will most likely list once they are resolved. A generator: the files are
+    walked only if ``parallel.interface_side`` shares the keys (not with one job, nor on a small
+    run)."""
     from physai_lint.model import launch as ir
     from physai_lint.model.values import literal_of
     from physai_lint.resolve.roots import actions_of
 
-    out = []
     for lf in launch_files:
         for a in actions_of(lf):
             comps: tuple[Any, ...] = ()
             if isinstance(a, ir.NodeAction):
                 pkg, exe = literal_of(a.package), literal_of(a.executable)
                 if pkg and exe:
-                    out.append((pkg, exe))
+                    yield pkg, exe
                 comps = a.composable_nodes
             elif isinstance(a, ir.LoadComposableNodes):
                 comps = a.nodes
             for c in comps:
                 pkg, plugin = literal_of(c.package), literal_of(c.plugin)
                 if pkg and plugin:
-                    out.append((pkg, plugin))
-    return out
+                    yield pkg, plugin
 
 
 def _interface_keys(launches: list[Any]) -> list[tuple[str, str]]:

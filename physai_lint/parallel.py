@@ -21,7 +21,7 @@ from __future__ import annotations
 import os
 import struct
 import sys
-from collections.abc import Iterator, Sequence
+from collections.abc import Iterable, Iterator, Sequence
 from typing import Any
 
 # Below this many files a pool costs more than it saves (measured: forking two workers and
@@ -262,6 +262,9 @@ RULE_COST: dict[str, int] = {
     "T201": 8, "T203": 8, "P103": 8, "T202": 7, "L110": 6, "N103": 5, "L003": 5,
 }
 DEFAULT_COST = 3
+# A rule's memo family (a key shared by its members) and what the family's memo costs.
+_FAMILY = {c: f"memo {f}" for f, (_, members) in enumerate(SHARED_MEMOS) for c in members}
+_MEMO_COST = {c: cost for cost, members in SHARED_MEMOS for c in members}
 
 
 def _fork_min_files() -> int:
@@ -273,26 +276,18 @@ def _fork_min_files() -> int:
 
 def plan_units(codes: Sequence[str]) -> list[list[int]]:
     """Rules (by their codes, in run order) as units of indexes into ``codes``: the rules of a
-    shared memo together, each other rule alone; heaviest first by static cost (ties: run order),
-    each unit in run order."""
-    units: dict[Any, list[int]] = {}
-    memo_cost: dict[Any, int] = {}
-    family: dict[str, Any] = {}
-    for f, (cost, members) in enumerate(SHARED_MEMOS):
-        memo_cost[("memo", f)] = cost
-        family.update((c, ("memo", f)) for c in members)
+    shared memo together, each other rule alone; heaviest first by static cost (``unit_cost``;
+    ties: run order), each unit in run order."""
+    units: dict[str, list[int]] = {}
     for i, code in enumerate(codes):
-        units.setdefault(family.get(code, code), []).append(i)
-    costed = sorted(((memo_cost.get(key, 0) + sum(RULE_COST.get(codes[i], DEFAULT_COST) for i in idx), idx)
-                     for key, idx in units.items()), key=lambda u: (-u[0], u[1][0]))
-    return [idx for _, idx in costed]
+        units.setdefault(_FAMILY.get(code, code), []).append(i)
+    return sorted(units.values(), key=lambda idx: (-unit_cost(codes, idx), idx[0]))
 
 
 def unit_cost(codes: Sequence[str], unit: Sequence[int]) -> int:
-    """The static cost of a unit of ``plan_units``."""
-    memo = {c: cost for cost, members in SHARED_MEMOS for c in members}
+    """The static cost of a unit of ``plan_units``: its rules' and their shared memo's."""
     own = sum(RULE_COST.get(codes[i], DEFAULT_COST) for i in unit)
-    return own + max((memo.get(codes[i], 0) for i in unit), default=0)
+    return own + max((_MEMO_COST.get(codes[i], 0) for i in unit), default=0)
 
 
 def run_rules(rules: Sequence[tuple[str, Any]], run_one: Any, jobs: int, progress: Any = None,
@@ -330,8 +325,7 @@ def run_rules(rules: Sequence[tuple[str, Any]], run_one: Any, jobs: int, progres
 
 def _share_rules(rules: Sequence[tuple[str, Any]], run_one: Any, units: list[list[int]],
                  results: list[list[Any] | None], progress: Any, helpers: int) -> None:
-    """``run_rules``'s units through ``share``: fills ``results`` for every rule."""
-    import pickle
+    """``run_rules``'s units through ``share_values``: fills ``results`` for every rule."""
 
     def local(k: int) -> None:
         for i in units[k]:
@@ -339,18 +333,7 @@ def _share_rules(rules: Sequence[tuple[str, Any]], run_one: Any, units: list[lis
             if progress is not None:
                 progress.advance()
 
-    def remote(k: int) -> bytes | None:
-        found = [run_one(*rules[i]) for i in units[k]]
-        try:
-            return pickle.dumps(found, protocol=pickle.HIGHEST_PROTOCOL)
-        except Exception:  # noqa: BLE001 - findings that cannot travel: this process runs the unit
-            return None
-
-    def accept(k: int, data: bytes) -> bool:
-        try:
-            found = pickle.loads(data)
-        except Exception:  # noqa: BLE001 - anything that does not load: run the unit here
-            return False
+    def take(k: int, found: Any) -> bool:
         if not isinstance(found, list) or len(found) != len(units[k]) or \
                 not all(isinstance(f, list) for f in found):
             return False
@@ -360,7 +343,7 @@ def _share_rules(rules: Sequence[tuple[str, Any]], run_one: Any, units: list[lis
                 progress.advance()
         return True
 
-    share(len(units), local, remote, accept, helpers)
+    share_values(len(units), local, lambda k: [run_one(*rules[i]) for i in units[k]], take, helpers)
 
 
 def _can_fork(jobs: int, files: int, least: int | None = None) -> bool:
@@ -506,12 +489,18 @@ def package_reads(index: Any, names: Sequence[str], jobs: int, files: int = 0) -
         index.packages.get(names[i])
 
     def take(i: int, read: Any) -> bool:
-        if not isinstance(read, tuple) or len(read) != 3:
-            return False
-        index.adopt_package(names[i], read)
-        return True
+        return _adopt(index, names[i], read)
 
     return Side(len(names), local, lambda i: index.read_package_elsewhere(names[i]), take, jobs - 1)
+
+
+def _adopt(index: Any, name: str, read: Any) -> bool:
+    """``index.adopt_package(name, read)`` for what ``read_package_elsewhere`` returned in a
+    helper; False when it did not come back as that."""
+    if not isinstance(read, tuple) or len(read) != 3:
+        return False
+    index.adopt_package(name, read)
+    return True
 
 
 # ---- node interfaces: extracted before the rules, shared with forked helpers -----------------
@@ -535,7 +524,7 @@ def prefetch_interfaces(interfaces: Any, keys: Sequence[tuple[str, str]], jobs: 
         side.run()
 
 
-def interface_side(interfaces: Any, keys: Sequence[tuple[str, str]], jobs: int, files: int = 0
+def interface_side(interfaces: Any, keys: Iterable[tuple[str, str]], jobs: int, files: int = 0
                    ) -> Side | None:
     """``prefetch_interfaces`` as items to share (``Side``): the resolution share takes them along
     (``resolve_entries``), with the keys the parsed launch files name; the helpers, working from the
@@ -571,12 +560,10 @@ def interface_side(interfaces: Any, keys: Sequence[tuple[str, str]], jobs: int, 
             return False
         values, read = value
         if not isinstance(values, list) or len(values) != len(items[i]) or \
-                not (read is None or isinstance(read, tuple) and len(read) == 3):
+                read is not None and not _adopt(index, items[i][0][0], read):
             return False
         for key, one in zip(items[i], values):
             interfaces.prime(key, one)
-        if read is not None:
-            index.adopt_package(items[i][0][0], read)
         return True
 
     return Side(len(items), local, compute, take, jobs - 1)

@@ -23,15 +23,21 @@ def suggestion(name: str, candidates: Iterable[str]) -> str:
     return "did you mean " + " or ".join(f'"{c}"' for c in close) + "?"
 
 
+def run_memo(store: dict[Any, Any], key: Any, owner: object, build: Any) -> Any:
+    """``build()``, kept in ``store[key]`` for as long as it is asked with the same ``owner`` (by
+    identity: the launches or the launch file it was built from)."""
+    found = store.get(key)
+    if found is None or found[0] is not owner:
+        found = store[key] = (owner, build())
+    return found[1]
+
+
 def all_nodes(ctx: CheckContext, include_inactive: bool = True) -> Iterator[tuple[LaunchResult, NodeInstance]]:
     """Every node instance of every resolved launch, deduplicated by source position and fqn.
     Listed once per run: a dozen rules ask, and hashing every node's key was a tenth of the rules'
     time on a large workspace."""
     key = "_all_nodes" if include_inactive else "_active_nodes"
-    cached = ctx.options.get(key)
-    if cached is None or cached[0] is not ctx.launches:
-        cached = ctx.options[key] = (ctx.launches, list(_all_nodes(ctx, include_inactive)))
-    return iter(cached[1])
+    return iter(run_memo(ctx.options, key, ctx.launches, lambda: list(_all_nodes(ctx, include_inactive))))
 
 
 def _all_nodes(ctx: CheckContext, include_inactive: bool) -> Iterator[tuple[LaunchResult, NodeInstance]]:
@@ -51,12 +57,8 @@ def ir_objects(ctx: CheckContext, path: str) -> list[Any]:
     """Every model object in launch file ``path``'s actions (not atoms, lists or positions), in
     depth-first order, at most 60 levels deep. Listed once per file and run for the rules that look
     for one kind of value anywhere (``Command``, substitutions a distro lacks)."""
-    cache = ctx.options.setdefault("_ir_objects", {})
     lf = ctx.launch_files[path]
-    found = cache.get(path)
-    if found is None or found[0] is not lf:
-        found = cache[path] = (lf, _objects(lf.actions))
-    return found[1]  # type: ignore[no-any-return]
+    return run_memo(ctx.options.setdefault("_ir_objects", {}), path, lf, lambda: _objects(lf.actions))  # type: ignore[no-any-return]
 
 
 def _objects(root: Any) -> list[Any]:

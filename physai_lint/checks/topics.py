@@ -6,23 +6,21 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import Any
 
-from physai_lint.checks._util import all_nodes, where
+from physai_lint.checks._util import all_nodes, run_memo, where
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.graph.system import Endpoint, SystemGraph, build_graph, remap_target, similar
 from physai_lint.interfaces.model import LIFECYCLE_ENDPOINTS
 from physai_lint.model.findings import Diagnostic, Related
 from physai_lint.model.values import literal_of
 from physai_lint.resolve.model import EffRemap, NodeInstance
+from physai_lint.resolve.names import validate_full_topic_name
 
 _CACHE_KEY = "_graphs"
 
 
 def graphs(ctx: CheckContext) -> list[SystemGraph]:
-    cached = ctx.options.get(_CACHE_KEY)
-    if cached is None or cached.get("launches") is not ctx.launches:
-        cached = {"launches": ctx.launches, "graphs": [build_graph(l, ctx.interfaces) for l in ctx.launches]}
-        ctx.options[_CACHE_KEY] = cached
-    return cached["graphs"]  # type: ignore[no-any-return]
+    return run_memo(ctx.options, _CACHE_KEY, ctx.launches,  # type: ignore[no-any-return]
+                    lambda: [build_graph(l, ctx.interfaces) for l in ctx.launches])
 
 
 @rule("T101", "identity-remap")
@@ -228,8 +226,6 @@ _LIFECYCLE_SERVICES = frozenset(name for kind, name, _ in LIFECYCLE_ENDPOINTS if
 
 
 def _valid(topic: str) -> bool:
-    from physai_lint.resolve.names import validate_full_topic_name
-
     return validate_full_topic_name(topic) is None
 
 

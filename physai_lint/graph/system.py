@@ -11,7 +11,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, Literal
 
-from physai_lint.interfaces.model import LIFECYCLE_ENDPOINTS, add_lifecycle_endpoints
+from physai_lint.interfaces.model import LIFECYCLE_ENDPOINTS, with_lifecycle_endpoints
 from physai_lint.resolve.model import EffRemap, LaunchResult, NodeInstance
 from physai_lint.resolve.names import expand_topic_name
 
@@ -158,13 +158,7 @@ _LIFECYCLE_KEYS = frozenset((kind, name) for kind, name, _ in LIFECYCLE_ENDPOINT
 def _as_lifecycle(iface: Any) -> Any:
     """A copy of ``iface`` with the endpoints every lifecycle node has (the code may not show
     them: a class derived from a project's own lifecycle base, or no source found)."""
-    import copy
-
-    out = copy.copy(iface)
-    for kind, _, _ in LIFECYCLE_ENDPOINTS:
-        setattr(out, kind, list(getattr(iface, kind, None) or ()))
-    add_lifecycle_endpoints(out)  # (those it lists already are not added twice)
-    return out
+    return with_lifecycle_endpoints(iface)
 
 
 def to_networkx(g: SystemGraph) -> Any:

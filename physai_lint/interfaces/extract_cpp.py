@@ -612,19 +612,17 @@ _BASE_AFTER = frozenset({"{", ",", "("})
 # way (an unterminated char literal, whose newline it does not count; a raw string without a
 # delimiter; a file past MAX_SOURCE) is tokenized whole, as before.
 
-_IDCHARS = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz_0123456789")
+_IDCHARS = _ID_START_CHARS | frozenset("0123456789")
 _SKIM = re.compile(r"//[^\n]*"
                    r"|/\*(?:[^*]*\*+(?:[^/*][^*]*\*+)*/|[\s\S]*)"
                    r'|"(?:[^"\\\n]+|\\[\s\S]?)*["\n]?'
                    r"|'(?:[^'\\\n]+|\\[\s\S]?)*['\n]?"
                    r"|\#")
-_RAW_PREFIXES = frozenset(("R", "u8R", "uR", "UR", "LR"))
+_RAW_PREFIXES = frozenset(p for p in _STR_PREFIX if p.endswith("R"))
 # a part of every word an anchor can be (_LOOP_NAMES and read_only); the identifier around it
 # decides. (No look-around, nor optional prefixes: either costs the regex its fast scan for the
 # first character, three times the time.)
-_ANCHOR = re.compile(r"create_(?:publisher|subscription|service|client|server)|advertise|subscribe"
-                     r"|declare_(?:parameter|or_get_parameter)|Transform(?:Listener|Broadcaster)"
-                     r"|read_only|LifecycleNode")
+_ANCHOR = re.compile(_CALL_WORDS.pattern + "|read_only")
 _ANCHOR_WORDS = _LOOP_NAMES | {"read_only"}
 
 
@@ -924,8 +922,7 @@ def _is_constant_name(toks: list[Tok], k: int) -> bool:
 
 
 def _extract_one(path: str, text: str, iface: NodeInterface) -> None:
-    if not _CALL_WORDS.search(text):
-        return
+    """Extract a file ``_file_interface`` found a call word in."""
     _extract_from(path, _Windows.of(text) or _Whole(text), iface)
 
 

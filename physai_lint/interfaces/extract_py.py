@@ -58,14 +58,19 @@ def _dotted(node: ast.AST) -> str | None:
     return None
 
 
-def _ros_type(node: ast.AST | None, imports: dict[str, str]) -> str | None:
-    if node is None:
-        return None
-    d = _dotted(node)
+def _qualified(node: ast.AST | None, imports: dict[str, str]) -> str | None:
+    """The dotted name ``node`` spells, its first part through the file's imports."""
+    d = _dotted(node) if node is not None else None
     if not d:
         return None
     head, _, rest = d.partition(".")
-    full = imports.get(head, head) + ("." + rest if rest else "")
+    return imports.get(head, head) + ("." + rest if rest else "")
+
+
+def _ros_type(node: ast.AST | None, imports: dict[str, str]) -> str | None:
+    full = _qualified(node, imports)
+    if full is None:
+        return None
     parts = full.split(".")
     if len(parts) >= 3 and parts[-2] in ("msg", "srv", "action"):
         return f"{parts[-3]}/{parts[-2]}/{parts[-1]}"
@@ -75,12 +80,7 @@ def _ros_type(node: ast.AST | None, imports: dict[str, str]) -> str | None:
 def _is_lifecycle_node(base: ast.AST, imports: dict[str, str]) -> bool:
     """Whether a base class is rclpy's lifecycle node (``rclpy.lifecycle.Node``, also exported as
     ``LifecycleNode``; ``rclpy.lifecycle.node.LifecycleNode``)."""
-    d = _dotted(base)
-    if not d:
-        return False
-    head, _, rest = d.partition(".")
-    full = imports.get(head, head) + ("." + rest if rest else "")
-    return full in ("rclpy.lifecycle.Node", "rclpy.lifecycle.LifecycleNode",
+    return _qualified(base, imports) in ("rclpy.lifecycle.Node", "rclpy.lifecycle.LifecycleNode",
                     "rclpy.lifecycle.node.LifecycleNode")
 
 
@@ -225,10 +225,11 @@ def _extract_one(path: str, tree: ast.Module, iface: NodeInterface) -> None:
                 continue
             name_node = _arg(node, npos, nkw)
             name = _str_of(name_node, consts)
+            if name_node is None:
+                continue
             rtype = _ros_type(_arg(node, tpos, tkw), imports)
-            if name is None or name_node is None:
-                if name_node is not None:  # a name, just not one known statically
-                    iface.unnamed.append((kind, rtype))
+            if name is None:  # a name, just not one known statically
+                iface.unnamed.append((kind, rtype))
                 continue
             getattr(iface, kind).append(Endpoint(name, rtype, _span(path, name_node)))
         elif fname == "declare_parameter" and isinstance(fn, ast.Attribute):

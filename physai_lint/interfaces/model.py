@@ -92,15 +92,19 @@ LIFECYCLE_ENDPOINTS: tuple[tuple[str, str, str], ...] = (
 )
 
 
-def add_lifecycle_endpoints(iface: NodeInterface, span: Span | None = None) -> None:
-    """Give ``iface`` the endpoints of a lifecycle node it does not list yet."""
+def with_lifecycle_endpoints(iface: Any) -> Any:
+    """A copy of ``iface`` that also lists the endpoints of a lifecycle node (those it lists
+    already are not added twice); ``iface`` itself is not changed."""
+    import copy
+
+    out = copy.copy(iface)
+    for kind in {k for k, _, _ in LIFECYCLE_ENDPOINTS}:
+        setattr(out, kind, list(getattr(iface, kind, None) or ()))
     for kind, name, type_ in LIFECYCLE_ENDPOINTS:
-        have = getattr(iface, kind)
-        if have is None:
-            have = []
-            setattr(iface, kind, have)
+        have = getattr(out, kind)
         if not any(e.name == name for e in have):
-            have.append(Endpoint(name, type_, span))
+            have.append(Endpoint(name, type_, None))
+    return out
 
 
 fast_pickle_module(globals())  # tuples instead of dataclasses.fields() per object (model/pickling.py)

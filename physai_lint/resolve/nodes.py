@@ -65,7 +65,7 @@ class NodeBuilder:
         if not path.strip():
             return None, "missing"  # launch_ros: '' is not a file (skipped with a warning, or an error)
         loc = pk.locate(path)
-        if loc.status == "ok" and loc.source and pk.exists(loc.source) and pk.is_dir(loc.source):
+        if loc.status == "ok" and loc.source and pk.is_dir(loc.source):
             return loc.source, "missing"  # a directory is not a parameter file
         return loc.source, loc.status
 

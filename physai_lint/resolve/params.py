@@ -3,6 +3,7 @@
 re-loaded, so it stays a string), substitution values are evaluated and typed by PyYAML."""
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable
 from typing import Any
 
@@ -12,11 +13,7 @@ from physai_lint.resolve.model import ParamValue, ResolvedParam
 MAX_YAML_TEXT = 100_000
 
 
-# yaml_type of short texts, by text: a workspace gives hundreds of nodes the same few values
-# ("true", "false", "0.5"), and a libyaml loader costs more to build than such a value to read.
-_TYPED: dict[str, ParamValue] = {}
-_TYPED_TEXT = 200
-_TYPED_MAX = 4096
+_TYPED_TEXT = 200  # yaml_type memoises texts up to this long (_short_yaml_type)
 
 
 def yaml_type(text: str) -> ParamValue:
@@ -25,13 +22,15 @@ def yaml_type(text: str) -> ParamValue:
         return ""
     if len(text) > _TYPED_TEXT:
         return _yaml_type(text)
-    try:
-        value = _TYPED[text]
-    except KeyError:
-        value = _yaml_type(text)
-        if len(_TYPED) < _TYPED_MAX:
-            _TYPED[text] = value
+    value = _short_yaml_type(text)
     return list(value) if isinstance(value, list) else value  # callers own their lists
+
+
+@functools.lru_cache(maxsize=4096)
+def _short_yaml_type(text: str) -> ParamValue:
+    """``_yaml_type`` by text: a workspace gives hundreds of nodes the same few values ("true",
+    "false", "0.5"), and a libyaml loader costs more to build than such a value to read."""
+    return _yaml_type(text)
 
 
 def _yaml_type(text: str) -> ParamValue:

@@ -254,7 +254,7 @@ class PackageIndex:
 
     def package_of_source(self, path: str) -> WorkspacePackage | None:
         """The workspace package whose source directory holds ``path``."""
-        name = next(self._names_holding(_norm(path)), None)
+        name = self.package_name_of(path)
         return None if name is None else self.packages.get(name)
 
     def package_name_of(self, path: str) -> str | None:

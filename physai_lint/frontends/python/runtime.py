@@ -166,18 +166,6 @@ class ModuleValue:
     globals: dict[str, Any]
 
 
-def is_symbolic_text(v: Any) -> bool:
-    from . import api
-
-    return isinstance(v, SymStr) or (isinstance(v, LObj) and api.is_substitution(v.qual))
-
-
-def is_action(v: Any) -> bool:
-    from . import api
-
-    return isinstance(v, LObj) and v.qual in api.ACTION_KINDS
-
-
 def type_name(v: Any) -> str:
     if isinstance(v, LObj):
         return v.qual.rsplit(".", 1)[-1]

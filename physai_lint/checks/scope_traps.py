@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from physai_lint.checks._util import all_nodes, where
 from physai_lint.checks.base import CheckContext, rule
-from physai_lint.model.findings import Diagnostic
+from physai_lint.model.findings import Diagnostic, Related
 from physai_lint.model.launch import NodeAction
 from physai_lint.model.values import literal_of
 
@@ -67,16 +67,23 @@ def timer_loses_scope(ctx: CheckContext) -> Iterator[Diagnostic]:
 def scoped_group_leak(ctx: CheckContext) -> Iterator[Diagnostic]:
     seen: set[object] = set()
     for launch in ctx.launches:
-        for span, what in launch.scope_leaks:
+        for span, what, outer, receivers in launch.scope_leaks:
             if span in seen:
                 continue
             seen.add(span)
+            reached = sorted(set(receivers), key=lambda s: (s.file, s.line, s.col))
+            nodes = {n.span: n for n in launch.nodes}
+            names = [_who(nodes[s]) if s in nodes else f"the node at line {s.line}" for s in reached[:3]]
+            more = f" and {len(reached) - 3} more" if len(reached) > 3 else ""
             yield Diagnostic(
                 "L111", span,
-                f"{what} inside a scoped group also applies after the group: it is appended to a "
-                "list created outside the group, which the group's scope does not restore",
+                f"{what} inside a scoped group also applies after the group, to {', '.join(names)}{more}: "
+                "it is appended to a list created outside the group, which the group's scope does "
+                "not restore",
                 help="give the nodes inside the group remappings=/parameters= directly, or move the "
                      "outer SetRemap/SetParameter (which created the shared list) after the group",
+                related=(Related(outer, "the list was created here, outside the group"),
+                         *(Related(s, "a node after the group that receives it") for s in reached)),
                 key=what)
 
 

@@ -50,6 +50,26 @@ class Frame:
     passed: frozenset[str] = frozenset()  # args the include that loaded this file passed
 
 
+@dataclass
+class Leak:
+    """A SetRemap/SetParameter/SetParametersFromFile appended, inside a scoped group, to a list an
+    outer scope created (``GroupAction`` copies the configurations shallowly): reported when a node
+    launched after the group receives it (``receivers``)."""
+
+    item: Any
+    span: Span
+    what: str
+    group: int  # the group, opened just inside the list's scope, that the action ran in
+    outer: Span  # the outer action that created the list
+    receivers: list[Span] = field(default_factory=list)
+
+
+def _item_span(item: Any) -> Span:
+    """The action that appended a global list item: (src, dst, span, reached) for a remap,
+    ("param", name, value, span) or ("file", path, raw, span) for parameters."""
+    return item[2] if len(item) == 4 and isinstance(item[2], Span) else item[3]
+
+
 def combine(a: bool | None, b: bool | None) -> bool | None:
     if a is False or b is False:
         return False
@@ -69,6 +89,9 @@ class Instantiator:
         self.deferred: list[tuple[tuple[ir.Action, ...], dict[str, Any], Frame]] = []
         self.handlers: list[tuple[ir.EventHandler, Frame, dict[str, Any]]] = []
         self.list_depth: dict[int, int] = {}
+        self.open_groups: list[int] = []  # the scoped groups being walked, outermost first
+        self._groups = 0
+        self.leaks: dict[int, Leak] = {}  # id(list item) -> a leak waiting for a node after its group
         self.ev = Evaluator(packages, self._on_read, self._on_package, self._on_bad_condition)
         self.ev.on_dirname = self._on_dirname
         self.nodes = NodeBuilder(self)
@@ -252,9 +275,27 @@ class Instantiator:
             lst = []
             scope.configs[key] = lst
             self.list_depth[id(lst)] = self.frame.depth
-        elif self.frame.depth > self.list_depth.get(id(lst), 0) and self.frame.deferred is None:
-            self.result.scope_leaks.append((span, what))
+        else:
+            depth = self.list_depth.get(id(lst), 0)
+            if self.frame.depth > depth and self.frame.deferred is None and depth < len(self.open_groups):
+                # Appended to an outer scope's list: a leak once a node outside this group reads it.
+                self.leaks[id(item)] = Leak(item, span, what, self.open_groups[depth], _item_span(lst[0]))
         lst.append(item)
+
+    def leaks_reaching(self, lst: list[Any], node_span: Span, effective: Callable[[list[Any], int], bool]
+                       ) -> None:
+        """A node reads a global list: the leaked items in it whose group is over (the node comes
+        after the group, or in a later one) reach it, unless ``effective`` says they change nothing."""
+        for i, item in enumerate(lst):
+            leak = self.leaks.get(id(item))
+            if leak is None or leak.item is not item or leak.group in self.open_groups:
+                continue
+            if not effective(lst, i):
+                continue
+            if not leak.receivers:
+                self.result.scope_leaks.append((leak.span, leak.what, leak.outer, leak.receivers))
+            if node_span not in leak.receivers:
+                leak.receivers.append(node_span)
 
     # ---- groups and includes ---------------------------------------------------------------------
     def _group(self, a: ir.Group, scope: Scope) -> None:
@@ -272,9 +313,12 @@ class Instantiator:
                 inner[k] = val
         scope.configs = inner
         self.frame.depth += 1
+        self._groups += 1
+        self.open_groups.append(self._groups)
         try:
             self._walk(a.actions, scope)
         finally:
+            self.open_groups.pop()
             self.frame.depth -= 1
             scope.configs = saved
 

@@ -69,23 +69,32 @@ class NodeBuilder:
             return loc.source, "missing"  # a directory is not a parameter file
         return loc.source, loc.status
 
-    def _global_sources(self, scope: Scope, node_id: str) -> tuple[list[EffRemap], list[ParamSourceR]]:
+    def _global_sources(self, scope: Scope, node_id: str, node_span: Span
+                        ) -> tuple[list[EffRemap], list[ParamSourceR]]:
         remaps: list[EffRemap] = []
-        for src, dst, span, reached in scope.configs.get(REMAPS) or []:
+        remap_list = scope.configs.get(REMAPS) or []
+        for src, dst, span, reached in remap_list:
             remaps.append(EffRemap(src, dst, span, "global"))
             reached.append(node_id)
         params: list[ParamSourceR] = []
-        for item in scope.configs.get(PARAMS) or []:
+        param_list = scope.configs.get(PARAMS) or []
+        typed: dict[int, Any] = {}  # list index -> the SetParameter's value as the node gets it
+        for i, item in enumerate(param_list):
             if item[0] == "param":
                 _, name, pvalue, span = item
                 if name is None:
                     params.append(UnknownParams("SetParameter with an unknown name", span))
                     continue
-                rp = resolve_pvalue(name, pvalue, lambda x: self.inst.ev.eval(x, scope), span)
-                params.append(ResolvedParamDict((_cli_typed(rp),), span, "global", "/**"))
+                rp = _cli_typed(resolve_pvalue(name, pvalue, lambda x: self.inst.ev.eval(x, scope), span))
+                typed[i] = rp.value
+                params.append(ResolvedParamDict((rp,), span, "global", "/**"))
             else:
                 _, path, _, span = item
                 params.append(self._file(path, span, "global", False, scope))
+        if self.inst.leaks:
+            self.inst.leaks_reaching(remap_list, node_span, _remap_matters)
+            self.inst.leaks_reaching(param_list, node_span,
+                                     lambda lst, i: _parameter_matters(lst, i, typed, self.inst.leaks))
         return remaps, params
 
     def _file(self, path: str | None, span: Span, origin: str, allow_substs: bool, scope: Scope
@@ -169,7 +178,7 @@ class NodeBuilder:
         namespace, ns_specified = self._namespace(ns_raw, ns_given, scope)
         fqn = names.join_fqn(namespace, name) if (namespace and name) else None
         node_id = self._id()
-        remaps, gparams = self._global_sources(scope, node_id)
+        remaps, gparams = self._global_sources(scope, node_id, a.span)
         key = fqn if (name_given and ns_specified and fqn) else "/**"
         params = gparams + self._own_params(a.parameters, scope, key)
         remaps += self._remaps(a.remappings, scope)
@@ -215,7 +224,7 @@ class NodeBuilder:
         for _key, value, _span in cn.extra_arguments:  # read when the component is loaded
             self.inst.ev.eval(value, scope)
         node_id = self._id()
-        remaps, gparams = self._global_sources(scope, node_id)
+        remaps, gparams = self._global_sources(scope, node_id, cn.span)
         params = gparams + self._own_params(cn.parameters, scope, fqn or "/**")
         inst_ = NodeInstance(
             id=node_id, kind="composable_node", package=package, executable=plugin, name=name,
@@ -300,6 +309,32 @@ class NodeBuilder:
                 res.never_started.append((h.span, f"its target action is never added to the launch description ({h.event})"))
             elif seen is False:
                 res.never_started.append((h.span, f"its target action is disabled by its condition ({h.event})"))
+
+
+def _remap_matters(lst: list[Any], i: int) -> bool:
+    """Whether global remap ``i`` can change a node: rcl applies the first rule that matches, so
+    not when an earlier rule has the same (known) source name."""
+    src = lst[i][0]
+    return src is None or not any(item[0] == src for item in lst[:i])
+
+
+def _parameter_matters(lst: list[Any], i: int, typed: dict[int, Any], leaks: dict[int, Any]) -> bool:
+    """Whether global parameter item ``i`` can change what a node gets: a parameter file always
+    may; a SetParameter not when a later one sets the same name (the last wins), nor when the last
+    one before it for that name that is not itself a leak gave the same known value."""
+    item = lst[i]
+    if item[0] != "param" or item[1] is None:
+        return True
+    name = item[1]
+    if any(later[0] == "param" and later[1] == name for later in lst[i + 1:]):
+        return False
+    for j in range(i - 1, -1, -1):
+        if lst[j][0] == "file":
+            return True  # the file may have set it in between
+        if lst[j][1] == name and id(lst[j]) not in leaks:
+            before, value = typed.get(j), typed.get(i)
+            return before is None or value is None or (type(before), before) != (type(value), value)
+    return True
 
 
 def _cli_typed(rp: ResolvedParam) -> ResolvedParam:

@@ -19,6 +19,7 @@ def duplicate_node_name(ctx: CheckContext) -> Iterator[Diagnostic]:
     seen: set[object] = set()
     for launch in ctx.launches:
         first: dict[str, list[NodeInstance]] = {}
+        exits: dict[str, list[str]] | None = None
         for node in launch.nodes:
             # Only nodes certainly started under the analysed arguments: a condition that cannot be
             # evaluated (an unknown PythonExpression, say) often excludes the other node.
@@ -27,7 +28,12 @@ def duplicate_node_name(ctx: CheckContext) -> Iterator[Diagnostic]:
             if node.kind == "composable_node":
                 continue  # N107 covers components; a component and a node are still checked below
             earlier = first.setdefault(node.fqn, [])
-            prev = earlier[0] if earlier else None
+            if exits is None and earlier:
+                exits = _started_after(launch)
+            # A node started again once the other exited (OnProcessExit: the respawn pattern)
+            # never runs beside it.
+            prev = next((p for p in earlier if not _after_exit(exits, p.id, node.id)
+                         and not _after_exit(exits, node.id, p.id)), None) if exits is not None else None
             earlier.append(node)
             if prev is None:
                 continue
@@ -43,6 +49,31 @@ def duplicate_node_name(ctx: CheckContext) -> Iterator[Diagnostic]:
                 help="give each node its own name or namespace (PushRosNamespace / namespace=)",
                 related=(Related(p.spans.get("name", p.span), "first launched here"),),
                 key=node.fqn)
+
+
+def _started_after(launch: Any) -> dict[str, list[str]]:
+    """Startup edges by the id that must come first: what starts after it (any reason), with
+    ``"exit:" + id`` keys for what starts only once it exited (OnProcessExit)."""
+    out: dict[str, list[str]] = {}
+    for e in launch.edges:
+        out.setdefault(e.before, []).append(e.after)
+        if e.reason == "on_process_exit":
+            out.setdefault("exit:" + e.before, []).append(e.after)
+    return out
+
+
+def _after_exit(edges: dict[str, list[str]], before: str, after: str) -> bool:
+    """Whether ``after`` starts only once ``before`` exited: reached from ``before`` by a path
+    whose first edge is an OnProcessExit of ``before``."""
+    todo, seen = list(edges.get("exit:" + before, ())), set()
+    while todo:
+        x = todo.pop()
+        if x == after:
+            return True
+        if x not in seen:
+            seen.add(x)
+            todo.extend(edges.get(x, ()))
+    return False
 
 
 @rule("N107", "duplicate-component-name")

@@ -219,7 +219,7 @@ def test_made_before_added_in_a_branch_is_under_the_branch():
     assert shown == [("if", "rviz2"), (None, "always"), ("if", "made_inside"), ("unless", "rviz2")]
 
 
-def test_list_changed_otherwise_in_a_branch_is_left_alone():
+def test_an_item_a_branch_removes_stays_under_the_other_branch():
     acts = actions("""
         import os
         from launch_ros.actions import Node
@@ -231,10 +231,28 @@ def test_list_changed_otherwise_in_a_branch_is_left_alone():
                 nodes.append(Node(package='p', executable='c'))
             return nodes
     """)
-    # not marked: only what the branch made carries its condition (as before this marking)
+    # "b" is launched only when the body is not taken, "c" only when it is
     shown = [(a.condition.kind if isinstance(a, L.Group) else None,
               lit((a.actions[0] if isinstance(a, L.Group) else a).executable)) for a in acts]
-    assert shown == [(None, "a"), ("if", "c")]
+    assert shown == [(None, "a"), ("unless", "b"), ("if", "c")]
+
+
+def test_each_branch_starts_from_the_list_as_it_was():
+    acts = actions("""
+        import os
+        from launch_ros.actions import Node
+
+        def generate_launch_description():
+            nodes = [Node(package='p', executable='a')]
+            if os.environ.get('X'):
+                nodes.remove(nodes[0])
+            else:
+                nodes.append(Node(package='p', executable=str(len(nodes))))
+            return nodes
+    """)
+    shown = [(a.condition.kind if isinstance(a, L.Group) else None,
+              lit((a.actions[0] if isinstance(a, L.Group) else a).executable)) for a in acts]
+    assert shown == [("unless", "a"), ("unless", "1")]
 
 
 def test_unknown_values_stay_unknown():

@@ -302,6 +302,8 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
         rets: list[Any] = []
         for tag, block in zip(tags, (body, orelse)):
             scope.vars = dict(snapshot)
+            for w in watched:
+                w.start()
             self.cond_stack.append(tag)
             ret = NO
             try:
@@ -389,32 +391,53 @@ def _made_under(v: Any, tag: CondTag) -> tuple[Any, ...]:
 
 
 class _Watched:
-    """A list that existed before an undecided ``if``: the items each branch appended to it are
-    marked ``Branched`` with that branch's tag once both have run (both branches mutate the same
-    list, one after the other). A list a branch did more to than append to is left as it was."""
+    """A list that existed before an undecided ``if``. Each branch starts from the list as it was
+    (``start``) and leaves it as it wants (``after``); ``mark`` then puts together what both left:
+    an item both kept is there unconditionally, one only a branch kept or added is ``Branched``
+    under that branch's tag (a ``pop``/``remove`` in the body leaves the item to the else, and
+    the other way round), in the order the branches left them."""
 
     def __init__(self, items: list[Any]) -> None:
         self.items = items
         self.before = list(items)
-        self.added: list[tuple[int, int, CondTag]] = []
-        self.plain = True
+        self.results: list[tuple[list[Any], CondTag]] = []
+
+    def start(self) -> None:
+        self.items[:] = self.before
 
     def after(self, tag: CondTag) -> None:
-        n = len(self.before)
-        if len(self.items) < n or any(a is not b for a, b in zip(self.items, self.before)):
-            self.plain = False
-            return
-        if len(self.items) > n:
-            self.added.append((n, len(self.items), tag))
-        self.before = list(self.items)
+        self.results.append((list(self.items), tag))
 
     def mark(self) -> None:
-        if not self.plain:
+        if len(self.results) != 2:
             return
-        for start, end, tag in self.added:
-            for k in range(start, end):
-                self.items[k] = Branched("added under a condition known only at launch time",
-                                         None, self.items[k], tag)
+        (first, tag0), (second, tag1) = self.results
+        if _same(first, self.before) and _same(second, self.before):
+            return  # neither branch touched it
+        from difflib import SequenceMatcher
+
+        # by identity: the items are launch objects and user values, compared as the same object
+        matcher = SequenceMatcher(None, [id(x) for x in first], [id(x) for x in second], autojunk=False)
+        old = {id(x) for x in self.before}
+        merged: list[Any] = []
+        for op, i1, i2, j1, j2 in matcher.get_opcodes():
+            if op == "equal":
+                merged.extend(first[i1:i2])
+                continue
+            # where the branches differ: the items that were there before, then the new ones
+            sides = ((first[i1:i2], tag0), (second[j1:j2], tag1))
+            for keep in (True, False):
+                merged.extend(self._branched(x, tag) for part, tag in sides for x in part
+                              if (id(x) in old) == keep)
+        self.items[:] = merged
+
+    @staticmethod
+    def _branched(item: Any, tag: CondTag) -> Any:
+        return Branched("added under a condition known only at launch time", None, item, tag)
+
+
+def _same(a: list[Any], b: list[Any]) -> bool:
+    return len(a) == len(b) and all(x is y for x, y in zip(a, b))
 
 
 def _lists_of(variables: dict[str, Any]) -> list[_Watched]:

@@ -45,6 +45,7 @@ class _Interp:
         self.param_libs: dict[str, str | None] = {}
         self.target_sources: dict[str, list[str]] = {}
         self.plugin_targets: dict[str, str] = {}
+        self.output_names: dict[str, dict[str, str]] = {}  # target -> OUTPUT_NAME / RUNTIME_OUTPUT_NAME / SUFFIX
         self.subdirs = 0
         self.auto_package = False
         self.reads: list[tuple[str, str | None]] = []  # (path, text) of other files read
@@ -186,6 +187,22 @@ class _Interp:
                 self.record_sources(a)
         elif name == "target_sources":
             self.record_sources(self.args(cmd))
+        elif name == "set_target_properties":
+            a = self.args(cmd)
+            if "PROPERTIES" in a:
+                k = a.index("PROPERTIES")
+                props = a[k + 1:]
+                for target in a[:k]:
+                    for prop, value in zip(props[::2], props[1::2]):
+                        self.target_property(target, prop, value)
+        elif name == "set_property":
+            a = self.args(cmd)
+            if a and a[0] == "TARGET" and "PROPERTY" in a:
+                k = a.index("PROPERTY")
+                if len(a) == k + 3:  # one value: a list value is not a name
+                    for target in a[1:k]:
+                        if target not in ("APPEND", "APPEND_STRING"):
+                            self.target_property(target, a[k + 1], a[k + 2])
         elif name == "target_link_libraries":
             a = self.args(cmd)
             if a:
@@ -279,6 +296,19 @@ class _Interp:
             source = source.rstrip("/")
         self.info.rules.append(InstallRule(kind=kind, dest=dest, source=source, line=line,  # type: ignore[arg-type]
                                            origin=origin, contents_only=contents_only, **kw))  # type: ignore[arg-type]
+
+    def target_property(self, target: str, prop: str, value: str) -> None:
+        """The properties that rename what a target installs (``OUTPUT_NAME``: teleop_twist_joy
+        builds target ``teleop_twist_joy_node`` into the executable ``teleop_node``)."""
+        if prop in ("OUTPUT_NAME", "RUNTIME_OUTPUT_NAME", "SUFFIX"):
+            self.output_names.setdefault(target, {})[prop] = value
+
+    def file_name(self, target: str) -> str:
+        """The file an executable target builds: ``RUNTIME_OUTPUT_NAME``, else ``OUTPUT_NAME``,
+        else the target's name, then ``SUFFIX`` (none by default on Linux)."""
+        props = self.output_names.get(target, {})
+        base = props.get("RUNTIME_OUTPUT_NAME") or props.get("OUTPUT_NAME") or target
+        return base + props.get("SUFFIX", "")
 
     def install(self, cmd: Command, origin: str) -> None:
         a = self.args(cmd)
@@ -383,6 +413,17 @@ class _Interp:
     def finish(self) -> None:
         if self.auto_package:
             self.info.executables.update(self.auto_exes)
+        # installed targets are files named by their properties; sources stay found by target
+        target_of = {exe: exe for exe in self.exes | self.info.executables}
+        for target in sorted(set(self.output_names) & self.info.executables & self.exes):
+            name = self.file_name(target)
+            self.info.executables.discard(target)
+            if UNKNOWN in name:
+                self.info.executables_complete = False
+                continue
+            self.info.executables.add(name)
+            target_of.pop(target, None)
+            target_of[name] = target
         # parameter libraries reachable from each executable / plugin target, transitively
         def reach(target: str) -> list[str]:
             out: list[str] = []
@@ -413,16 +454,16 @@ class _Interp:
                 stack.extend(sorted(x for x in self.links.get(t, ()) if x in self.libs))
             return out
 
-        for exe in sorted(self.exes | self.info.executables):
-            srcs = sources(exe)
+        for exe, target in sorted(target_of.items()):
+            srcs = sources(target)
             if srcs:
                 self.info.sources[exe] = srcs
         for plugin, target in sorted(self.plugin_targets.items()):
             srcs = sources(target)
             if srcs:
                 self.info.sources[plugin] = srcs
-        for exe in sorted(self.exes | self.info.executables):
-            ys = reach(exe)
+        for exe, target in sorted(target_of.items()):
+            ys = reach(target)
             if ys:
                 self.info.parameter_yamls[exe] = ys
         for plugin, target in self.plugin_targets.items():

@@ -154,3 +154,30 @@ def test_cmake_subdirectory_scope_does_not_leak_project_name(tmp_path):
                             "install(DIRECTORY config DESTINATION share/${PROJECT_NAME})\n")
     assert info.executables == {"node_a"}
     assert ("share/pkg", str(tmp_path / "config")) in [(r.dest, r.source) for r in info.rules]
+
+
+def test_cmake_output_name_renames_the_installed_executable(tmp_path):
+    info = _cmake(tmp_path, """
+project(pkg)
+add_executable(${PROJECT_NAME}_node src/joy.cpp)
+set_target_properties(${PROJECT_NAME}_node PROPERTIES OUTPUT_NAME teleop_node PREFIX "")
+add_executable(runner src/run.cpp)
+set_property(TARGET runner PROPERTY RUNTIME_OUTPUT_NAME run)
+set_target_properties(runner PROPERTIES OUTPUT_NAME ignored SUFFIX .bin)
+add_executable(plain src/plain.cpp)
+install(TARGETS ${PROJECT_NAME}_node runner plain DESTINATION lib/${PROJECT_NAME})
+""", ("src/joy.cpp", "src/run.cpp", "src/plain.cpp"))
+    assert info.executables == {"teleop_node", "run.bin", "plain"}
+    assert info.executables_complete
+    assert {exe: [p.rsplit("/", 1)[-1] for p in srcs] for exe, srcs in info.sources.items()} == {
+        "teleop_node": ["joy.cpp"], "run.bin": ["run.cpp"], "plain": ["plain.cpp"]}
+
+
+def test_cmake_unknown_output_name_makes_the_executables_incomplete(tmp_path):
+    info = _cmake(tmp_path, """
+project(pkg)
+add_executable(node src/a.cpp)
+set_target_properties(node PROPERTIES OUTPUT_NAME ${NAME_FROM_CACHE})
+install(TARGETS node DESTINATION lib/${PROJECT_NAME})
+""")
+    assert info.executables == set() and not info.executables_complete

@@ -91,6 +91,46 @@ def simple_condition(condition: str, context: dict[str, str]) -> bool | None:
     return any_true or all_true
 
 
+def can_hold(condition: str | None, context: dict[str, str]) -> bool:
+    """Whether a dependency's condition can be true on a machine building for ``context``: a
+    ``$VARIABLE`` other than those of ``context`` (``$HUSARION_ROS_BUILD_TYPE == simulation``) is
+    set by whoever builds, so a comparison with it can go either way."""
+    if condition is None:
+        return True
+    if not set(_VAR_RX.findall(condition)) - context.keys():
+        try:
+            return _evaluate_condition(condition, context)
+        except Exception:  # noqa: BLE001 - unparsable: keep the dependency
+            return True
+    if _SIMPLE_RX.fullmatch(condition) is None:
+        return True  # parentheses or quotes around unknown values: it may hold
+
+    def compare(left: str, op: str, right: str) -> bool | None:
+        terms = []
+        for token in (left, right):
+            if token.startswith("$") and token[1:] not in context:
+                return None
+            terms.append(str(context[token[1:]]) if token.startswith("$") else token)
+        return _COMPARE[op](*terms)
+
+    # three-valued: ``and`` binds tighter than ``or``; None is "depends on the build machine"
+    disjuncts: list[bool | None] = []
+    conj: bool | None = True
+    for m in _PART_RX.finditer(condition):
+        left, op, right, joiner = m.groups()
+        if joiner == "or":
+            disjuncts.append(conj)
+            conj = True
+        elif joiner is None:
+            value = compare(left, op, right)
+            conj = False if conj is False or value is False else (None if value is None or conj is None else True)
+    disjuncts.append(conj)
+    return any(d is not False for d in disjuncts)
+
+
+_VAR_RX = re.compile(r"\$([A-Za-z0-9_]+)")
+
+
 def _catkin_parser() -> Any:
     """``catkin_pkg.package.parse_package_string``, imported without pyparsing.
 
@@ -167,8 +207,9 @@ def _parse_manifest(text: str, filename: str, distro: str) -> ManifestInfo:
             exec_depends=lines,
             error=(msg, line),
         )
+    context = {"ROS_VERSION": "2", "ROS_DISTRO": distro, "ROS_PYTHON_VERSION": "3"}
     try:
-        pkg.evaluate_conditions({"ROS_VERSION": "2", "ROS_DISTRO": distro, "ROS_PYTHON_VERSION": "3"})
+        pkg.evaluate_conditions(context)
     except Exception:  # noqa: BLE001, S110 - an unparsable condition keeps the dependency
         pass
     deps: dict[str, int] = {}
@@ -176,8 +217,7 @@ def _parse_manifest(text: str, filename: str, distro: str) -> ManifestInfo:
     # build_export_depends (format 1 <run_depend> fills both): read those directly, same names
     # and conditions without the copies.
     for dep in list(pkg.exec_depends) + list(pkg.build_export_depends):
-        cond = getattr(dep, "evaluated_condition", None)
-        if cond is False:
+        if getattr(dep, "evaluated_condition", None) is False and not can_hold(dep.condition, context):
             continue
         deps.setdefault(dep.name, lines.get(dep.name, 1))
     try:

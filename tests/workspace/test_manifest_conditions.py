@@ -119,3 +119,34 @@ def _catkin(condition: str) -> bool | ValueError:
         return bool(evaluate_condition(condition, CONTEXT))
     except ValueError as exc:
         return exc
+
+
+@pytest.mark.parametrize(("condition", "holds"), [
+    (None, True),
+    ("$ROS_VERSION == 1", False),
+    ("$ROS_VERSION == 2", True),
+    ("$HUSARION_ROS_BUILD_TYPE == simulation", True),  # set by whoever builds: either way
+    ("$HUSARION_ROS_BUILD_TYPE == hardware or $ROS_VERSION == 1", True),
+    ("$ROS_VERSION == 1 and $BUILD_TYPE == simulation", False),  # false whatever BUILD_TYPE is
+    ("$ROS_DISTRO == humble and $BUILD_TYPE != hardware", False),  # jazzy here
+    ("$ROS_DISTRO == jazzy and $BUILD_TYPE != hardware", True),
+    ("($BUILD_TYPE == 'sim')", True),  # not the simple form: it may hold
+])
+def test_a_dependency_counts_when_its_condition_can_hold(condition, holds):
+    from physai_lint.workspace.package_xml import can_hold
+
+    assert can_hold(condition, CONTEXT) is holds
+
+
+def test_a_dependency_on_a_build_variable_declares_the_package(tmp_path):
+    from physai_lint.workspace.package_xml import parse_manifest
+
+    text = """<?xml version="1.0"?>
+<package format="3">
+  <name>demo</name><version>0.0.1</version><description>d</description>
+  <maintainer email="dev@example.com">dev</maintainer><license>MIT</license>
+  <exec_depend condition="$BUILD_TYPE == simulation">gz_ros2_control</exec_depend>
+  <exec_depend condition="$ROS_VERSION == 1">roslaunch</exec_depend>
+</package>
+"""
+    assert set(parse_manifest(text, "package.xml", "humble").exec_depends) == {"gz_ros2_control"}

@@ -74,7 +74,9 @@ def include(inst: Instantiator, a: ir.Include, scope: Scope) -> None:
         inst.result.opaque.append((a.span, f'included file "{source}" could not be parsed'))
         return
     passed = {name for name, _, _ in args}
-    rec.required_missing = tuple(sorted({
+    # Arguments that cannot be known (launch_arguments computed from a file, or forwarded from
+    # context.launch_configurations) may pass any name: no required one is known to be missing.
+    rec.required_missing = () if a.arguments is None else tuple(sorted({
         d.name for d, conditional in declared_arguments(lf.actions)
         if not conditional and d.default is None and d.name not in passed
     }))

@@ -1,0 +1,53 @@
+"""L104 missing-required-argument needs the names an include passes: launch_arguments that cannot
+be known (computed from a file read at launch, forwarded from ``context.launch_configurations``)
+may pass any name, so nothing is reported; arguments known to leave one out still are."""
+from physai_lint.engine import CheckOptions, run_check
+
+INNER = """
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument("robot_ip"),
+        Node(package="demo_nodes_cpp", executable="talker", arguments=[LaunchConfiguration("robot_ip")]),
+    ])
+"""
+
+OUTER = """
+import os
+import yaml
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch.actions import IncludeLaunchDescription
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+
+
+def generate_launch_description():
+    share = get_package_share_directory("demo")
+    with open(os.path.join(share, "config", "robot.yaml")) as f:
+        robot = yaml.safe_load(f)
+    return LaunchDescription([IncludeLaunchDescription(
+        PythonLaunchDescriptionSource(os.path.join(share, "launch", "inner.launch.py")),
+        launch_arguments={ARGS}.items())])
+"""
+
+
+def _l104(tmp_path, demo_package, args: str) -> list[str]:
+    pkg = demo_package({"launch/inner.launch.py": INNER, "launch/outer.launch.py": OUTER.replace("{ARGS}", args),
+                        "config/robot.yaml": "robot_ip: 10.0.0.1\n"})
+    report = run_check(CheckOptions(paths=[str(pkg / "launch/outer.launch.py")], workspace=str(tmp_path),
+                                    select=("L104",)), cwd=str(tmp_path))
+    return [f.message for f in report.findings]
+
+
+def test_arguments_read_from_a_file_at_launch_may_pass_any_name(tmp_path, demo_package):
+    assert _l104(tmp_path, demo_package, "{k: str(v) for k, v in robot.items()}") == []
+
+
+def test_known_arguments_that_leave_one_out_are_reported(tmp_path, demo_package):
+    assert [m.split(";")[0] for m in _l104(tmp_path, demo_package, '{"port": "22"}')] == [
+        'include of "inner.launch.py" does not pass required argument "robot_ip" (given: port)']

@@ -109,8 +109,11 @@ def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | N
     except RecursionError:
         calls, names = (), ()
     concats = tuple(sorted(ev.concats.values(), key=lambda c: (c.span.line, c.span.col, c.how)))
-    # launch_testing files (`launch_test FILE`) define generate_test_description instead.
+    # launch_testing files (`launch_test FILE`) define generate_test_description instead, and
+    # launch_pytest modules (run by pytest) give their descriptions through @launch_pytest.fixture.
     is_test = any(isinstance(n, (ast.FunctionDef, ast.AsyncFunctionDef)) and n.name == "generate_test_description"
+                  or isinstance(n, ast.Import) and any(a.name.split(".")[0] == "launch_pytest" for a in n.names)
+                  or isinstance(n, ast.ImportFrom) and (n.module or "").split(".")[0] == "launch_pytest"
                   for n in tree.body)
     wrong = tuple(sorted(ev.wrong_types.values(), key=lambda f: (f.span.line, f.span.col, f.call)))
     tested = tuple(sorted(ev.tests.values(), key=lambda c: (c.span.line, c.span.col, c.how)))

@@ -36,7 +36,7 @@ class NodeBuilder:
         self.count = 0
         self.by_action: dict[str, list[str]] = {}  # "<file>#<action id>" -> node ids
         self.pending: list[tuple[str, str, str, Span, float | None]] = []  # key, node, reason, span, delay
-        self.watched: list[tuple[ir.EventHandler, str | None, str]] = []
+        self.watched: list[tuple[ir.EventHandler, str | None, str, bool | None]] = []
 
     # ---- helpers ------------------------------------------------------------------------------
     def _id(self) -> str:
@@ -286,7 +286,7 @@ class NodeBuilder:
 
     def watch(self, h: ir.EventHandler, key: str | None, fr: Any) -> None:
         if key is not None:
-            self.watched.append((h, key, fr.file))
+            self.watched.append((h, key, fr.file, fr.active))
 
     def _node(self, node_id: str) -> NodeInstance:
         for n in self.inst.result.nodes:
@@ -300,11 +300,11 @@ class NodeBuilder:
             for before in self.by_action.get(key, []):
                 res.edges.append(StartEdge(before, after, reason, span, delay))
         opaque_files = {s.file for s, _ in res.opaque}
-        for h, key, file in self.watched:
+        for h, key, file, active in self.watched:
             assert key is not None
             seen = self.inst.visited.get(key, "never")
-            if file in opaque_files:
-                continue
+            if file in opaque_files or active is False:
+                continue  # a handler disabled by its own condition is never registered
             if seen == "never":
                 res.never_started.append((h.span, f"its target action is never added to the launch description ({h.event})"))
             elif seen is False:

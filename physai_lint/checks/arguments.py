@@ -52,8 +52,9 @@ def unused_argument(ctx: CheckContext) -> Iterator[Diagnostic]:
                 continue
             if launch.opaque and any(s.file == arg.file for s, _ in launch.opaque):
                 continue
-            if _read_anywhere(ctx, arg.file, arg.name) or arg.name in _escaped(ctx, arg.file):
-                continue
+            escaped = _escaped(ctx, arg.file)
+            if _read_anywhere(ctx, arg.file, arg.name) or arg.name in escaped or "*" in escaped:
+                continue  # "*": the file reads the whole context.launch_configurations mapping
             seen.add((arg.span, arg.name))
             yield Diagnostic(
                 "L102", arg.span,

@@ -6,7 +6,7 @@ from typing import TYPE_CHECKING, Any
 from physai_lint.model.span import Span
 
 from . import bounds, symbolic
-from .runtime import FileHandle, KPath, Opaque, SymStr, UserFunc
+from .runtime import EVERY_CONFIGURATION, FileHandle, KPath, LaunchConfigsSym, Opaque, SymStr, UserFunc
 
 if TYPE_CHECKING:
     from .evaluator import Evaluator
@@ -27,6 +27,8 @@ def call_builtin(ev: Evaluator, name: str, args: list[Any], kwargs: dict[str, An
         from .classes import zero_arg_super
 
         return zero_arg_super(ev, span)
+    if any(isinstance(a, LaunchConfigsSym) for a in [*args, *kwargs.values()]):
+        ev.escaped.add(EVERY_CONFIGURATION)  # dict(context.launch_configurations): all of them
     for a in list(args) + list(kwargs.values()):
         if isinstance(a, Opaque) and name not in ("print", "isinstance", "list", "tuple"):
             return Opaque(a.reason, span)

@@ -23,6 +23,7 @@ from .runtime import (
     ClassValue,
     ContextSym,
     Decorator,
+    EVERY_CONFIGURATION,
     FileHandle,
     Instance,
     KPath,
@@ -49,6 +50,9 @@ _KNOWN_MODULES = frozenset(["os", "os.path", "sys", "json", "yaml", "pathlib", "
 
 def iterate(ev: Evaluator, v: Any) -> list[Any] | None:
     """The items of a known iterable, else None."""
+    if isinstance(v, LaunchConfigsSym):
+        ev.escaped.add(EVERY_CONFIGURATION)  # iterating the mapping reads every configuration
+        return None
     if isinstance(v, dict):
         return list(v.keys())
     if isinstance(v, (list, tuple, str, set, frozenset, range)):
@@ -241,6 +245,10 @@ def _call_cached(ev: Evaluator, f: UserFunc, args: list[Any], kwargs: dict[str, 
     return result
 
 
+_ARGV_READERS = ("nav2_common.launch.ParseMultiRobotPose",
+                 "nav2_common.launch.parse_multirobot_pose.ParseMultiRobotPose")
+
+
 def call_ref(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any], span: Span) -> Any:
     if qual.startswith("builtins."):
         return builtin_calls.call_builtin(ev, qual[9:], args, kwargs, span)
@@ -253,6 +261,15 @@ def call_ref(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any], 
         return SymStr((FindPackage(to_value(pkg, span), kind, span, eager=True),))  # type: ignore[arg-type]
     if qual == "launch.utilities.perform_substitutions" and len(args) >= 2:
         return _performed(ev, args[1], span)
+    if qual in _ARGV_READERS:
+        # nav2_common's ParseMultiRobotPose(name) takes ``name:=...`` from the command line
+        # (sys.argv) itself: the argument is read, with a value the linter cannot know.
+        name = args[0] if args else kwargs.get("target_argument")
+        if isinstance(name, str):
+            ev.escaped.add(name)
+        else:  # newer nav2_common: a substitution (LaunchConfiguration("robots")) performed later
+            ev.escape([*args, *kwargs.values()])
+        return Opaque(f"{qual.rsplit('.', 1)[-1]} reads the command line", span)
     if qual == "os.path.join":
         if any(symbolic.is_subst(a) for a in args):
             ev.concat("os.path.join", span, "substitution passed to os.path.join at description time")
@@ -334,6 +351,8 @@ def call_method(ev: Evaluator, obj: Any, name: str, args: list[Any], kwargs: dic
         if name == "get" and args and isinstance(args[0], str):
             default = to_value(args[1], span) if len(args) > 1 and args[1] is not None else None
             return SymStr((LaunchConfig((Text(str(args[0]), span),), default, span),))
+        if name not in ("__contains__",):
+            ev.escaped.add(EVERY_CONFIGURATION)  # items(), values(), copy(): the whole mapping
         return Opaque(f"launch_configurations.{name}", span)
     if isinstance(obj, FileHandle):
         if name == "read":

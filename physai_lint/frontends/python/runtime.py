@@ -158,6 +158,11 @@ class LaunchConfigsSym:
     """``context.launch_configurations``."""
 
 
+# In ``PythonFacts.escaped``: the whole ``context.launch_configurations`` mapping was read
+# (iterated, copied, handed on), so every configuration may be.
+EVERY_CONFIGURATION = "*"
+
+
 @dataclass(eq=False)
 class ModuleValue:
     """A sibling helper module evaluated statically."""

@@ -12,7 +12,7 @@ from physai_lint.model.values import BoolOp, Compare, IfElse, PathJoin, Value
 
 from . import api, bounds
 from .convert_values import to_value
-from .runtime import KPath, LObj, Opaque, SymBool, SymStr
+from .runtime import EVERY_CONFIGURATION, KPath, LaunchConfigsSym, LObj, Opaque, SymBool, SymStr
 
 MAX_SIZE = 100_000
 
@@ -40,7 +40,9 @@ class Recorder:
         if depth > 8:
             return
         for v in values:
-            if isinstance(v, LObj):
+            if isinstance(v, LaunchConfigsSym):
+                self.escaped.add(EVERY_CONFIGURATION)
+            elif isinstance(v, LObj):
                 if v.qual == "launch.substitutions.LaunchConfiguration":
                     name = v.arg(0, "variable_name")
                     if isinstance(name, str):

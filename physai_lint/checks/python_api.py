@@ -68,13 +68,14 @@ def concatenation(ctx: CheckContext) -> Iterator[Diagnostic]:
         "format": "formatted with str.format at description time",
         "percent": "formatted with % at description time",
         "str": "converted with str() at description time",
+        "join": "joined into a str with str.join at description time",
     }
     for path, facts in python_facts(ctx):
         for fact in facts.concatenations:
             yield Diagnostic(
                 "L004", fact.span,
-                f"substitution {fact.detail} is {how_text.get(fact.how, fact.how)}: it is an object, not "
-                "a string, so this raises TypeError or produces its repr",
+                f"substitution {fact.detail} is {how_text.get(fact.how, fact.how)}: it is an object, "
+                "not a string, so this raises TypeError or produces its repr",
                 help="build the value as a list of parts ([LaunchConfiguration('x'), '.yaml']) or with "
                      "PathJoinSubstitution([...])",
                 key=f"{fact.how}:{fact.detail}")

@@ -348,7 +348,7 @@ class ConcatFact:
     """A substitution joined at description time: ``'a' + LaunchConfiguration('x')``,
     ``os.path.join(FindPackageShare('p'), 'x')``, f-string of a substitution (``how``)."""
 
-    how: Literal["plus", "os.path.join", "f-string", "format", "percent", "str",
+    how: Literal["plus", "os.path.join", "f-string", "format", "percent", "str", "join",
                  "truth", "equals", "not-equals"]
     span: Span
     detail: str

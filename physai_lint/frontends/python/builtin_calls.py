@@ -44,7 +44,7 @@ def call_builtin(ev: Evaluator, name: str, args: list[Any], kwargs: dict[str, An
             return ""
         x = args[0]
         if symbolic.is_subst(x):
-            ev.concat("str", span, "substitution converted with str() at description time")
+            ev.concat("str", span, symbolic.shown_subst(x))
             return SymStr(symbolic.to_value(x, span))
         if isinstance(x, SymStr):
             return x
@@ -143,7 +143,7 @@ def str_format_join(ev: Evaluator, s: str, name: str, args: list[Any], kwargs: d
             if i:
                 parts.append(str(s))
             if symbolic.is_subst(item):
-                ev.concat("str", span, "substitution joined into a str at description time")
+                ev.concat("join", span, symbolic.shown_subst(item))
             parts.append(item)
         if not all(symbolic.is_textlike(p) for p in parts):
             return Opaque("join of values that cannot be evaluated statically", span)
@@ -158,6 +158,6 @@ def str_format_join(ev: Evaluator, s: str, name: str, args: list[Any], kwargs: d
             return Opaque("str.format fails statically", span)
     for a in list(args) + list(kwargs.values()):
         if symbolic.is_subst(a):
-            ev.concat("format", span, "substitution put into str.format at description time")
+            ev.concat("format", span, symbolic.shown_subst(a))
             break
     return Opaque("str.format of a value known only at launch time", span)

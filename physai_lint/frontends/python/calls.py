@@ -271,8 +271,9 @@ def call_ref(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any], 
             ev.escape([*args, *kwargs.values()])
         return Opaque(f"{qual.rsplit('.', 1)[-1]} reads the command line", span)
     if qual == "os.path.join":
-        if any(symbolic.is_subst(a) for a in args):
-            ev.concat("os.path.join", span, "substitution passed to os.path.join at description time")
+        subst = next((a for a in args if symbolic.is_subst(a)), None)
+        if subst is not None:
+            ev.concat("os.path.join", span, symbolic.shown_subst(subst))
         return symbolic.path_join(list(args), span) if args else Opaque("os.path.join()", span)
     if qual in ("os.path.dirname", "os.path.basename", "os.path.abspath", "os.path.normpath", "os.path.realpath",
                 "os.path.expanduser", "os.path.splitext", "os.path.split"):

@@ -134,7 +134,7 @@ def binop(rec: Recorder, op: ast.operator, left: Any, right: Any, span: Span) ->
         if not (isinstance(left, str) and isinstance(right, str)):
             for v in (left, right):
                 if is_subst(v):
-                    rec.concat("plus", span, f"{_subst_name(v)} joined with + at description time")
+                    rec.concat("plus", span, shown_subst(v))
                     break
             return SymStr(to_value(left, span) + to_value(right, span))
         return None
@@ -145,7 +145,7 @@ def binop(rec: Recorder, op: ast.operator, left: Any, right: Any, span: Span) ->
         if any(is_textlike(a) and not isinstance(a, str) for a in args):
             for a in args:
                 if is_subst(a):
-                    rec.concat("percent", span, f"{_subst_name(a)} formatted with % at description time")
+                    rec.concat("percent", span, shown_subst(a))
             return Opaque("string formatting of a launch-time value", span)
     return None
 
@@ -222,7 +222,7 @@ def format_value(rec: Recorder, x: Any, conversion: int, spec: Any, span: Span) 
         return x
     if is_textlike(x) and not isinstance(x, str):
         if is_subst(x):
-            rec.concat("f-string", span, f"{_subst_name(x)} put into an f-string at description time")
+            rec.concat("f-string", span, shown_subst(x))
         return x
     if isinstance(x, KPath):
         return x.path

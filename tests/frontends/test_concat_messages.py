@@ -1,0 +1,35 @@
+"""L004 substitution-concatenation says once what was done to which substitution."""
+from physai_lint.engine import CheckOptions, run_check
+
+LAUNCH = """
+import os
+from launch import LaunchDescription
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+from launch_ros.substitutions import FindPackageShare
+
+
+def generate_launch_description():
+    dof = LaunchConfiguration("dof")
+    a = "config/" + dof
+    b = os.path.join(FindPackageShare("demo"), "x.yaml")
+    c = f"{dof}.yaml"
+    d = "-".join(["a", dof])
+    e = str(dof)
+    f = "{}.yaml".format(dof)
+    return LaunchDescription([Node(package="demo_nodes_cpp", executable="talker", arguments=[a, b, c, d, e, f])])
+"""
+
+
+def test_each_message_names_the_substitution_and_what_was_done_once(tmp_path, demo_package):
+    pkg = demo_package({"launch/a.launch.py": LAUNCH})
+    report = run_check(CheckOptions(paths=[str(pkg / "launch/a.launch.py")], workspace=str(tmp_path),
+                                    select=("L004",)), cwd=str(tmp_path))
+    assert [f.message.split(":")[0] for f in report.findings] == [
+        'substitution LaunchConfiguration("dof") is joined with + at description time',
+        "substitution FindPackageShare is passed to os.path.join at description time",
+        'substitution LaunchConfiguration("dof") is put into an f-string at description time',
+        'substitution LaunchConfiguration("dof") is joined into a str with str.join at description time',
+        'substitution LaunchConfiguration("dof") is converted with str() at description time',
+        'substitution LaunchConfiguration("dof") is formatted with str.format at description time',
+    ]

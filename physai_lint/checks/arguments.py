@@ -7,6 +7,7 @@ from collections.abc import Iterator
 from physai_lint.checks._util import relpath, suggestion
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic, Related
+from physai_lint.model.launch import EVERY_CONFIGURATION
 
 
 @rule("L101", "undefined-launch-configuration")
@@ -45,6 +46,8 @@ def unused_argument(ctx: CheckContext) -> Iterator[Diagnostic]:
     for launch in ctx.launches:
         opaque_files = {s.file for s, _ in launch.opaque}
         read_names = {r.name for r in launch.config_reads}
+        # a file of this launch that reads the whole context.launch_configurations reads them all
+        reads_all = any(EVERY_CONFIGURATION in _escaped(ctx, f) for f in launch.files)
         for arg in launch.declared_args:
             # one finding per declaration; a helper (add_launch_arg) declares many at one span
             if not arg.name or arg.name in read_names or arg.file in opaque_files \
@@ -52,9 +55,8 @@ def unused_argument(ctx: CheckContext) -> Iterator[Diagnostic]:
                 continue
             if launch.opaque and any(s.file == arg.file for s, _ in launch.opaque):
                 continue
-            escaped = _escaped(ctx, arg.file)
-            if _read_anywhere(ctx, arg.file, arg.name) or arg.name in escaped or "*" in escaped:
-                continue  # "*": the file reads the whole context.launch_configurations mapping
+            if reads_all or _read_anywhere(ctx, arg.file, arg.name) or arg.name in _escaped(ctx, arg.file):
+                continue
             seen.add((arg.span, arg.name))
             yield Diagnostic(
                 "L102", arg.span,

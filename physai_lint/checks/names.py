@@ -11,7 +11,7 @@ from physai_lint.checks.base import CheckContext, rule
 from physai_lint.checks.topics import graphs
 from physai_lint.model.findings import Diagnostic, Related
 from physai_lint.resolve import names
-from physai_lint.resolve.model import NodeInstance
+from physai_lint.resolve.model import LaunchResult, NodeInstance
 
 
 @rule("N101", "duplicate-node-name")
@@ -19,7 +19,7 @@ def duplicate_node_name(ctx: CheckContext) -> Iterator[Diagnostic]:
     seen: set[object] = set()
     for launch in ctx.launches:
         first: dict[str, list[NodeInstance]] = {}
-        exits: dict[str, list[str]] | None = None
+        exits: _Edges | None = None
         for node in launch.nodes:
             # Only nodes certainly started under the analysed arguments: a condition that cannot be
             # evaluated (an unknown PythonExpression, say) often excludes the other node.
@@ -28,12 +28,14 @@ def duplicate_node_name(ctx: CheckContext) -> Iterator[Diagnostic]:
             if node.kind == "composable_node":
                 continue  # N107 covers components; a component and a node are still checked below
             earlier = first.setdefault(node.fqn, [])
-            if exits is None and earlier:
-                exits = _started_after(launch)
+            if not earlier:
+                earlier.append(node)
+                continue
+            exits = exits or _Edges(launch)
             # A node started again once the other exited (OnProcessExit: the respawn pattern)
-            # never runs beside it.
-            prev = next((p for p in earlier if not _after_exit(exits, p.id, node.id)
-                         and not _after_exit(exits, node.id, p.id)), None) if exits is not None else None
+            # never runs beside it, unless launch restarts that one itself (respawn=).
+            prev = next((p for p in earlier if not _restarted_after(exits, p, node)
+                         and not _restarted_after(exits, node, p)), None)
             earlier.append(node)
             if prev is None:
                 continue
@@ -51,29 +53,33 @@ def duplicate_node_name(ctx: CheckContext) -> Iterator[Diagnostic]:
                 key=node.fqn)
 
 
-def _started_after(launch: Any) -> dict[str, list[str]]:
-    """Startup edges by the id that must come first: what starts after it (any reason), with
-    ``"exit:" + id`` keys for what starts only once it exited (OnProcessExit)."""
-    out: dict[str, list[str]] = {}
-    for e in launch.edges:
-        out.setdefault(e.before, []).append(e.after)
-        if e.reason == "on_process_exit":
-            out.setdefault("exit:" + e.before, []).append(e.after)
-    return out
+def _restarted_after(edges: _Edges, first: NodeInstance, again: NodeInstance) -> bool:
+    return "respawn" not in first.spans and edges.after_exit(first.id, again.id)
 
 
-def _after_exit(edges: dict[str, list[str]], before: str, after: str) -> bool:
-    """Whether ``after`` starts only once ``before`` exited: reached from ``before`` by a path
-    whose first edge is an OnProcessExit of ``before``."""
-    todo, seen = list(edges.get("exit:" + before, ())), set()
-    while todo:
-        x = todo.pop()
-        if x == after:
-            return True
-        if x not in seen:
-            seen.add(x)
-            todo.extend(edges.get(x, ()))
-    return False
+class _Edges:
+    """A launch's startup edges: what starts after each id, and what only once it exited."""
+
+    def __init__(self, launch: LaunchResult) -> None:
+        self.after: dict[str, list[str]] = {}
+        self.on_exit: dict[str, list[str]] = {}
+        for e in launch.edges:
+            self.after.setdefault(e.before, []).append(e.after)
+            if e.reason == "on_process_exit":
+                self.on_exit.setdefault(e.before, []).append(e.after)
+
+    def after_exit(self, before: str, after: str) -> bool:
+        """Whether ``after`` starts only once ``before`` exited: reached from ``before`` by a
+        path whose first edge is an OnProcessExit of ``before``."""
+        todo, seen = list(self.on_exit.get(before, ())), set()
+        while todo:
+            x = todo.pop()
+            if x == after:
+                return True
+            if x not in seen:
+                seen.add(x)
+                todo.extend(self.after.get(x, ()))
+        return False
 
 
 @rule("N107", "duplicate-component-name")

@@ -71,19 +71,18 @@ def scoped_group_leak(ctx: CheckContext) -> Iterator[Diagnostic]:
             if span in seen:
                 continue
             seen.add(span)
-            reached = sorted(set(receivers), key=lambda s: (s.file, s.line, s.col))
-            nodes = {n.span: n for n in launch.nodes}
-            names = [_who(nodes[s]) if s in nodes else f"the node at line {s.line}" for s in reached[:3]]
-            more = f" and {len(reached) - 3} more" if len(reached) > 3 else ""
+            names = sorted(receivers)
+            more = f" and {len(names) - 3} more" if len(names) > 3 else ""
             yield Diagnostic(
                 "L111", span,
-                f"{what} inside a scoped group also applies after the group, to {', '.join(names)}{more}: "
+                f"{what} inside a scoped group also applies after the group, to {', '.join(names[:3])}{more}: "
                 "it is appended to a list created outside the group, which the group's scope does "
                 "not restore",
                 help="give the nodes inside the group remappings=/parameters= directly, or move the "
                      "outer SetRemap/SetParameter (which created the shared list) after the group",
                 related=(Related(outer, "the list was created here, outside the group"),
-                         *(Related(s, "a node after the group that receives it") for s in reached)),
+                         *(Related(s, "a node after the group that receives it")
+                           for s in sorted(set(receivers.values()), key=lambda s: (s.file, s.line, s.col)))),
                 key=what)
 
 

@@ -354,17 +354,24 @@ class ConcatFact:
     detail: str
 
 
+# In ``PythonFacts.escaped``: the whole ``context.launch_configurations`` mapping was read
+# (iterated, copied, handed on, indexed by an unknown name), so every configuration may be.
+EVERY_CONFIGURATION = "*"
+
+
 @dataclass(frozen=True, slots=True)
 class PythonFacts:
     calls: tuple[CallFact, ...] = ()
     undefined_names: tuple[NameFact, ...] = ()
     concatenations: tuple[ConcatFact, ...] = ()
     has_generate_launch_description: bool = True
-    # Defines generate_test_description(): a launch_testing file, run by `launch_test`, not `ros2 launch`.
+    # A launch test, not run by `ros2 launch`: a launch_testing file (defines
+    # generate_test_description(), run by `launch_test`) or a launch_pytest module (run by pytest).
     is_launch_test: bool = False
     wrong_types: tuple[TypeFact, ...] = ()
     # Launch configurations (by name) handed to code the linter cannot follow (MoveItConfigsBuilder,
-    # an unknown helper): it may read them, so they are never reported unused.
+    # an unknown helper): it may read them, so they are never reported unused. EVERY_CONFIGURATION
+    # when the code read the whole mapping.
     escaped: tuple[str, ...] = ()
     # A substitution tested as a Python value while the description is built: ``if lc:`` (always
     # true), ``lc == 'true'`` (always false). ``how`` is "truth", "equals" or "not-equals".

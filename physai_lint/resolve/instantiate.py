@@ -37,12 +37,12 @@ REMAPS, PARAMS, NS = "ros_remaps", "global_params", "ros_namespace"
 
 @dataclass
 class Frame:
-    """Where the walker is: file, activity, include chain, group depth, deferred context."""
+    """Where the walker is: file, activity, include chain, deferred context (the scoped groups
+    are ``Instantiator.open_groups``)."""
 
     file: str
     active: bool | None
     chain: tuple[str, ...]
-    depth: int = 0  # scoped-group depth
     deferred: str | None = None  # "timer" / event kind when run after the description
     delay: float | None = 0.0
     trigger: list[tuple[str, str, Span]] = field(default_factory=list)  # (action key, reason, span)
@@ -50,24 +50,18 @@ class Frame:
     passed: frozenset[str] = frozenset()  # args the include that loaded this file passed
 
 
-@dataclass
+@dataclass(slots=True)
 class Leak:
     """A SetRemap/SetParameter/SetParametersFromFile appended, inside a scoped group, to a list an
     outer scope created (``GroupAction`` copies the configurations shallowly): reported when a node
-    launched after the group receives it (``receivers``)."""
+    launched after the group receives it (``receivers``: who, by name, and where)."""
 
-    item: Any
+    item: Any  # kept: its id is the key of the leak
     span: Span
     what: str
-    group: int  # the group, opened just inside the list's scope, that the action ran in
+    group: int  # the innermost group the action ran in
     outer: Span  # the outer action that created the list
-    receivers: list[Span] = field(default_factory=list)
-
-
-def _item_span(item: Any) -> Span:
-    """The action that appended a global list item: (src, dst, span, reached) for a remap,
-    ("param", name, value, span) or ("file", path, raw, span) for parameters."""
-    return item[2] if len(item) == 4 and isinstance(item[2], Span) else item[3]
+    receivers: dict[str, Span] = field(default_factory=dict)
 
 
 def combine(a: bool | None, b: bool | None) -> bool | None:
@@ -88,7 +82,8 @@ class Instantiator:
         self.budget = MAX_ACTIONS
         self.deferred: list[tuple[tuple[ir.Action, ...], dict[str, Any], Frame]] = []
         self.handlers: list[tuple[ir.EventHandler, Frame, dict[str, Any]]] = []
-        self.list_depth: dict[int, int] = {}
+        # id(global list) -> (the scoped-group depth it was created at, the action that created it)
+        self.list_depth: dict[int, tuple[int, Span]] = {}
         self.open_groups: list[int] = []  # the scoped groups being walked, outermost first
         self._groups = 0
         self.leaks: dict[int, Leak] = {}  # id(list item) -> a leak waiting for a node after its group
@@ -197,9 +192,10 @@ class Instantiator:
             self._append_global(scope, REMAPS, (src, dst, a.span, []), a.span, f'remap "{src}:={dst}"')
             self.result.set_remaps.append((a.span, src, dst, scope.configs[REMAPS][-1][3]))
         elif isinstance(a, ir.SetParameter):
+            # SetParameter.execute evaluates the value then, not when a node reads the list
             name = self.ev.eval(a.name, scope)
-            self._append_global(scope, PARAMS, ("param", name, a.value, a.span), a.span,
-                                f'parameter "{name}"')
+            typed = self.nodes.global_parameter(name, a.value, scope, a.span) if name is not None else None
+            self._append_global(scope, PARAMS, ("param", name, typed, a.span), a.span, f'parameter "{name}"')
         elif isinstance(a, ir.SetParametersFromFile):
             self._append_global(scope, PARAMS, ("file", self.ev.eval(a.path, scope), a.path, a.span),
                                 a.span, "parameter file")
@@ -274,28 +270,28 @@ class Instantiator:
         if not isinstance(lst, list):
             lst = []
             scope.configs[key] = lst
-            self.list_depth[id(lst)] = self.frame.depth
+            self.list_depth[id(lst)] = (len(self.open_groups), span)
         else:
-            depth = self.list_depth.get(id(lst), 0)
-            if self.frame.depth > depth and self.frame.deferred is None and depth < len(self.open_groups):
-                # Appended to an outer scope's list: a leak once a node outside this group reads it.
-                self.leaks[id(item)] = Leak(item, span, what, self.open_groups[depth], _item_span(lst[0]))
+            depth, outer = self.list_depth.get(id(lst), (0, span))
+            if len(self.open_groups) > depth and self.frame.deferred is None:
+                # Appended to an outer scope's list: a leak once a node outside the group this
+                # action runs in (the innermost) reads it.
+                self.leaks[id(item)] = Leak(item, span, what, self.open_groups[-1], outer)
         lst.append(item)
 
-    def leaks_reaching(self, lst: list[Any], node_span: Span, effective: Callable[[list[Any], int], bool]
-                       ) -> None:
-        """A node reads a global list: the leaked items in it whose group is over (the node comes
-        after the group, or in a later one) reach it, unless ``effective`` says they change nothing."""
+    def leaks_reaching(self, lst: list[Any], who: str, node_span: Span,
+                       effective: Callable[[list[Any], int], bool]) -> None:
+        """A node (``who``, at ``node_span``) reads a global list: the leaked items in it whose
+        group is over (the node comes after the group, or in a later one) reach it, unless
+        ``effective`` says they change nothing for it."""
         for i, item in enumerate(lst):
             leak = self.leaks.get(id(item))
-            if leak is None or leak.item is not item or leak.group in self.open_groups:
-                continue
-            if not effective(lst, i):
+            if leak is None or leak.group in self.open_groups or who in leak.receivers \
+                    or not effective(lst, i):
                 continue
             if not leak.receivers:
                 self.result.scope_leaks.append((leak.span, leak.what, leak.outer, leak.receivers))
-            if node_span not in leak.receivers:
-                leak.receivers.append(node_span)
+            leak.receivers[who] = node_span
 
     # ---- groups and includes ---------------------------------------------------------------------
     def _group(self, a: ir.Group, scope: Scope) -> None:
@@ -312,14 +308,12 @@ class Instantiator:
             if k is not None:
                 inner[k] = val
         scope.configs = inner
-        self.frame.depth += 1
         self._groups += 1
         self.open_groups.append(self._groups)
         try:
             self._walk(a.actions, scope)
         finally:
             self.open_groups.pop()
-            self.frame.depth -= 1
             scope.configs = saved
 
     def _include(self, a: ir.Include, scope: Scope) -> None:
@@ -368,7 +362,7 @@ class Instantiator:
             for actions, locals_, fr in deferred:
                 scope = Scope(configs=top.configs, locals=locals_)
                 outer = self.frame
-                self.frame = replace(fr, depth=0)
+                self.frame = fr
                 try:
                     self._walk(actions, scope)
                 finally:

@@ -36,7 +36,7 @@ class NodeBuilder:
         self.count = 0
         self.by_action: dict[str, list[str]] = {}  # "<file>#<action id>" -> node ids
         self.pending: list[tuple[str, str, str, Span, float | None]] = []  # key, node, reason, span, delay
-        self.watched: list[tuple[ir.EventHandler, str | None, str, bool | None]] = []
+        self.watched: list[tuple[ir.EventHandler, str | None, str]] = []
 
     # ---- helpers ------------------------------------------------------------------------------
     def _id(self) -> str:
@@ -69,8 +69,14 @@ class NodeBuilder:
             return loc.source, "missing"  # a directory is not a parameter file
         return loc.source, loc.status
 
-    def _global_sources(self, scope: Scope, node_id: str, node_span: Span
-                        ) -> tuple[list[EffRemap], list[ParamSourceR]]:
+    def global_parameter(self, name: str, pvalue: v.PValue, scope: Scope, span: Span) -> ResolvedParam:
+        """A ``SetParameter``'s value, typed as the node gets it (through ``-p name:=text``)."""
+        return _cli_typed(resolve_pvalue(name, pvalue, lambda x: self.inst.ev.eval(x, scope), span))
+
+    def _global_sources(self, scope: Scope, node_id: str, who: str, node_span: Span,
+                        own: tuple[ir.ParamSource, ...]) -> tuple[list[EffRemap], list[ParamSourceR]]:
+        """The global remaps and parameters a node gets (``who``, ``own``: its name and its own
+        parameters, for the scoped-group leaks that reach it)."""
         remaps: list[EffRemap] = []
         remap_list = scope.configs.get(REMAPS) or []
         for src, dst, span, reached in remap_list:
@@ -78,23 +84,21 @@ class NodeBuilder:
             reached.append(node_id)
         params: list[ParamSourceR] = []
         param_list = scope.configs.get(PARAMS) or []
-        typed: dict[int, Any] = {}  # list index -> the SetParameter's value as the node gets it
-        for i, item in enumerate(param_list):
+        for item in param_list:
             if item[0] == "param":
-                _, name, pvalue, span = item
+                _, name, rp, span = item
                 if name is None:
                     params.append(UnknownParams("SetParameter with an unknown name", span))
-                    continue
-                rp = _cli_typed(resolve_pvalue(name, pvalue, lambda x: self.inst.ev.eval(x, scope), span))
-                typed[i] = rp.value
-                params.append(ResolvedParamDict((rp,), span, "global", "/**"))
+                else:
+                    params.append(ResolvedParamDict((rp,), span, "global", "/**"))
             else:
                 _, path, _, span = item
                 params.append(self._file(path, span, "global", False, scope))
         if self.inst.leaks:
-            self.inst.leaks_reaching(remap_list, node_span, _remap_matters)
-            self.inst.leaks_reaching(param_list, node_span,
-                                     lambda lst, i: _parameter_matters(lst, i, typed, self.inst.leaks))
+            self.inst.leaks_reaching(remap_list, who, node_span, _remap_matters)
+            sets = {e.name for src in own if isinstance(src, ir.ParamDict) for e in src.entries}
+            self.inst.leaks_reaching(param_list, who, node_span,
+                                     lambda lst, i: _parameter_matters(lst, i, sets, self.inst.leaks))
         return remaps, params
 
     def _file(self, path: str | None, span: Span, origin: str, allow_substs: bool, scope: Scope
@@ -178,7 +182,8 @@ class NodeBuilder:
         namespace, ns_specified = self._namespace(ns_raw, ns_given, scope)
         fqn = names.join_fqn(namespace, name) if (namespace and name) else None
         node_id = self._id()
-        remaps, gparams = self._global_sources(scope, node_id, a.span)
+        remaps, gparams = self._global_sources(scope, node_id, _label(fqn, package, executable), a.span,
+                                               a.parameters)
         key = fqn if (name_given and ns_specified and fqn) else "/**"
         params = gparams + self._own_params(a.parameters, scope, key)
         remaps += self._remaps(a.remappings, scope)
@@ -224,7 +229,8 @@ class NodeBuilder:
         for _key, value, _span in cn.extra_arguments:  # read when the component is loaded
             self.inst.ev.eval(value, scope)
         node_id = self._id()
-        remaps, gparams = self._global_sources(scope, node_id, cn.span)
+        remaps, gparams = self._global_sources(scope, node_id, _label(fqn, package, plugin), cn.span,
+                                               cn.parameters)
         params = gparams + self._own_params(cn.parameters, scope, fqn or "/**")
         inst_ = NodeInstance(
             id=node_id, kind="composable_node", package=package, executable=plugin, name=name,
@@ -285,8 +291,8 @@ class NodeBuilder:
         self._register(inst_, inst_.action_id)
 
     def watch(self, h: ir.EventHandler, key: str | None, fr: Any) -> None:
-        if key is not None:
-            self.watched.append((h, key, fr.file, fr.active))
+        if key is not None and fr.active is not False:  # disabled by its own condition: never registered
+            self.watched.append((h, key, fr.file))
 
     def _node(self, node_id: str) -> NodeInstance:
         for n in self.inst.result.nodes:
@@ -300,39 +306,45 @@ class NodeBuilder:
             for before in self.by_action.get(key, []):
                 res.edges.append(StartEdge(before, after, reason, span, delay))
         opaque_files = {s.file for s, _ in res.opaque}
-        for h, key, file, active in self.watched:
+        for h, key, file in self.watched:
             assert key is not None
             seen = self.inst.visited.get(key, "never")
-            if file in opaque_files or active is False:
-                continue  # a handler disabled by its own condition is never registered
+            if file in opaque_files:
+                continue
             if seen == "never":
                 res.never_started.append((h.span, f"its target action is never added to the launch description ({h.event})"))
             elif seen is False:
                 res.never_started.append((h.span, f"its target action is disabled by its condition ({h.event})"))
 
 
+def _label(fqn: str | None, package: str | None, executable: str | None) -> str:
+    """A node as a message names it: ``node "/ns/name"``, else ``"package/executable"``."""
+    return f'node "{fqn}"' if fqn else f'"{package or "?"}/{executable or "?"}"'
+
+
 def _remap_matters(lst: list[Any], i: int) -> bool:
     """Whether global remap ``i`` can change a node: rcl applies the first rule that matches, so
     not when an earlier rule has the same (known) source name."""
     src = lst[i][0]
-    return src is None or not any(item[0] == src for item in lst[:i])
+    return src is None or not any(lst[j][0] == src for j in range(i))
 
 
-def _parameter_matters(lst: list[Any], i: int, typed: dict[int, Any], leaks: dict[int, Any]) -> bool:
-    """Whether global parameter item ``i`` can change what a node gets: a parameter file always
-    may; a SetParameter not when a later one sets the same name (the last wins), nor when the last
-    one before it for that name that is not itself a leak gave the same known value."""
+def _parameter_matters(lst: list[Any], i: int, own: set[str], leaks: dict[int, Any]) -> bool:
+    """Whether global parameter item ``i`` can change what a node gets. A parameter file always
+    may. A SetParameter does not when the node sets that name itself (its own parameters come
+    after the global ones), when a later SetParameter sets it (the last wins), or when the last one
+    before it for that name that is not itself a leak gave the same known value."""
     item = lst[i]
     if item[0] != "param" or item[1] is None:
         return True
     name = item[1]
-    if any(later[0] == "param" and later[1] == name for later in lst[i + 1:]):
+    if name in own or any(lst[j][0] == "param" and lst[j][1] == name for j in range(i + 1, len(lst))):
         return False
     for j in range(i - 1, -1, -1):
         if lst[j][0] == "file":
             return True  # the file may have set it in between
         if lst[j][1] == name and id(lst[j]) not in leaks:
-            before, value = typed.get(j), typed.get(i)
+            before, value = lst[j][2].value, item[2].value
             return before is None or value is None or (type(before), before) != (type(value), value)
     return True
 

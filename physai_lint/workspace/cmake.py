@@ -45,7 +45,8 @@ class _Interp:
         self.param_libs: dict[str, str | None] = {}
         self.target_sources: dict[str, list[str]] = {}
         self.plugin_targets: dict[str, str] = {}
-        self.output_names: dict[str, dict[str, str]] = {}  # target -> OUTPUT_NAME / RUNTIME_OUTPUT_NAME / SUFFIX
+        self.output_names: dict[str, dict[str, str]] = {}  # target -> its _RENAMING properties
+        self.installed_targets: set[str] = set()  # executable targets installed to lib/<pkg>
         self.subdirs = 0
         self.auto_package = False
         self.reads: list[tuple[str, str | None]] = []  # (path, text) of other files read
@@ -197,12 +198,21 @@ class _Interp:
                         self.target_property(target, prop, value)
         elif name == "set_property":
             a = self.args(cmd)
-            if a and a[0] == "TARGET" and "PROPERTY" in a:
+            if a and a[0] == "TARGET" and "PROPERTY" in a and len(a) > a.index("PROPERTY") + 1:
                 k = a.index("PROPERTY")
-                if len(a) == k + 3:  # one value: a list value is not a name
-                    for target in a[1:k]:
-                        if target not in ("APPEND", "APPEND_STRING"):
-                            self.target_property(target, a[k + 1], a[k + 2])
+                prop, values = a[k + 1], a[k + 2:]
+                for target in a[1:k]:
+                    if target in ("APPEND", "APPEND_STRING"):
+                        continue
+                    old = self.output_names.get(target, {}).get(prop)
+                    if not values:  # no value: the property is unset
+                        self.output_names.get(target, {}).pop(prop, None)
+                    elif "APPEND_STRING" in a[1:k]:
+                        self.target_property(target, prop, (old or "") + "".join(values))
+                    elif len(values) > 1 or ("APPEND" in a[1:k] and old):
+                        self.target_property(target, prop, UNKNOWN)  # a list is no file name
+                    else:
+                        self.target_property(target, prop, values[0])
         elif name == "target_link_libraries":
             a = self.args(cmd)
             if a:
@@ -224,7 +234,8 @@ class _Interp:
                 self.info.plugins.add(plugin)
                 self.plugin_targets[plugin] = a[0]
             if exe and UNKNOWN not in exe:
-                self.info.executables.add(exe)
+                self.installed_targets.add(exe)  # the macro adds and installs target ``exe``
+                self.exes.add(exe)
                 self.links.setdefault(exe, set()).add(a[0])
         elif name == "rclcpp_components_register_nodes":
             a = self.args(cmd)
@@ -300,15 +311,20 @@ class _Interp:
     def target_property(self, target: str, prop: str, value: str) -> None:
         """The properties that rename what a target installs (``OUTPUT_NAME``: teleop_twist_joy
         builds target ``teleop_twist_joy_node`` into the executable ``teleop_node``)."""
-        if prop in ("OUTPUT_NAME", "RUNTIME_OUTPUT_NAME", "SUFFIX"):
-            self.output_names.setdefault(target, {})[prop] = value
+        if prop not in _RENAMING:
+            return
+        if UNKNOWN in target:
+            self.info.executables_complete = False  # some target is renamed, which one is unknown
+            return
+        self.output_names.setdefault(target, {})[prop] = value
 
     def file_name(self, target: str) -> str:
-        """The file an executable target builds: ``RUNTIME_OUTPUT_NAME``, else ``OUTPUT_NAME``,
-        else the target's name, then ``SUFFIX`` (none by default on Linux)."""
+        """The file an executable target builds: the first of ``RUNTIME_OUTPUT_NAME`` and
+        ``OUTPUT_NAME`` that is set (an empty one means the target's name), between ``PREFIX`` and
+        ``SUFFIX`` (both empty by default on Linux)."""
         props = self.output_names.get(target, {})
-        base = props.get("RUNTIME_OUTPUT_NAME") or props.get("OUTPUT_NAME") or target
-        return base + props.get("SUFFIX", "")
+        base = next((props[p] for p in ("RUNTIME_OUTPUT_NAME", "OUTPUT_NAME") if p in props), "") or target
+        return props.get("PREFIX", "") + base + props.get("SUFFIX", "")
 
     def install(self, cmd: Command, origin: str) -> None:
         a = self.args(cmd)
@@ -344,7 +360,7 @@ class _Interp:
                     if UNKNOWN in t:
                         self.info.executables_complete = False
                     elif t not in self.libs:
-                        self.info.executables.add(t)
+                        self.installed_targets.add(t)
         elif mode in ("PROGRAMS", "FILES"):
             files, opts = _split_opts(a[1:], {"DESTINATION", "TYPE", "PERMISSIONS", "CONFIGURATIONS",
                                               "COMPONENT", "RENAME", "OPTIONAL", "EXCLUDE_FROM_ALL"})
@@ -412,17 +428,15 @@ class _Interp:
 
     def finish(self) -> None:
         if self.auto_package:
-            self.info.executables.update(self.auto_exes)
-        # installed targets are files named by their properties; sources stay found by target
-        target_of = {exe: exe for exe in self.exes | self.info.executables}
-        for target in sorted(set(self.output_names) & self.info.executables & self.exes):
+            self.installed_targets.update(self.auto_exes)
+        # an installed target is the file its properties name; its sources are still the target's
+        target_of = {exe: exe for exe in (self.exes - self.installed_targets) | self.info.executables}
+        for target in sorted(self.installed_targets):
             name = self.file_name(target)
-            self.info.executables.discard(target)
             if UNKNOWN in name:
                 self.info.executables_complete = False
                 continue
             self.info.executables.add(name)
-            target_of.pop(target, None)
             target_of[name] = target
         # parameter libraries reachable from each executable / plugin target, transitively
         def reach(target: str) -> list[str]:
@@ -471,6 +485,10 @@ class _Interp:
             ys = reach(target) + ([own] if own else [])
             if ys:
                 self.info.parameter_yamls[plugin] = sorted({y for y in ys if y})
+
+
+# Target properties that name the file an executable target builds.
+_RENAMING = ("OUTPUT_NAME", "RUNTIME_OUTPUT_NAME", "PREFIX", "SUFFIX")
 
 
 def _block(cmds: list[Command], i: int, start: str, end: str) -> tuple[list[Command], int]:

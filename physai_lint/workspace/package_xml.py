@@ -8,6 +8,7 @@ import re
 import sys
 import types
 import warnings
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -62,6 +63,7 @@ _TERM = r"(\$[A-Za-z0-9_]+|[A-Za-z0-9_-]+)"
 _COMPARISON = _TERM + r"\s*(==|!=|>=|>|<=|<)\s*" + _TERM
 _SIMPLE_RX = re.compile(r"\s*" + _COMPARISON + r"(?:\s+(?:and|or)\s+" + _COMPARISON + r")*\s*", re.ASCII)
 _PART_RX = re.compile(_COMPARISON + r"|(and|or)", re.ASCII)
+_CONDITION_VAR_RX = re.compile(r"\$([A-Za-z0-9_]+)")
 _COMPARE = {"==": str.__eq__, "!=": str.__ne__, ">=": str.__ge__, ">": str.__gt__, "<=": str.__le__,
             "<": str.__lt__}
 
@@ -73,49 +75,43 @@ def simple_condition(condition: str, context: dict[str, str]) -> bool | None:
 
     catkin_pkg's semantics: a ``$NAME`` is ``str(context.get(NAME, ""))``, a bare word itself,
     every comparison is between strings, ``and`` binds tighter than ``or``."""
-    if _SIMPLE_RX.fullmatch(condition) is None:
-        return None
-
-    def term(token: str) -> str:
-        return str(context.get(token[1:], "")) if token.startswith("$") else token
-
-    any_true = False
-    all_true = True  # of the current ``and`` run
-    for m in _PART_RX.finditer(condition):
-        left, op, right, joiner = m.groups()
-        if joiner == "or":
-            any_true = any_true or all_true
-            all_true = True
-        elif joiner is None:
-            all_true = all_true and _COMPARE[op](term(left), term(right))
-    return any_true or all_true
+    return _simple_value(condition, lambda name: str(context.get(name, "")))
 
 
 def can_hold(condition: str | None, context: dict[str, str]) -> bool:
-    """Whether a dependency's condition can be true on a machine building for ``context``: a
+    """Whether a dependency's condition can be true on a machine building for ``context``. A
     ``$VARIABLE`` other than those of ``context`` (``$HUSARION_ROS_BUILD_TYPE == simulation``) is
-    set by whoever builds, so a comparison with it can go either way."""
+    set by whoever builds, so a comparison with it is taken as able to go either way.
+
+    (``_parse_manifest`` asks only about conditions catkin_pkg found false with ``context``.)"""
     if condition is None:
         return True
-    if not set(_VAR_RX.findall(condition)) - context.keys():
+    if not set(_CONDITION_VAR_RX.findall(condition)) - context.keys():
         try:
             return _evaluate_condition(condition, context)
         except Exception:  # noqa: BLE001 - unparsable: keep the dependency
             return True
+    value = _simple_value(condition, context.get)
+    return value is None or value  # not the simple form (parentheses, quotes): it may hold
+
+
+def _simple_value(condition: str, lookup: Callable[[str], str | None]) -> bool | None:
+    """A simple condition (``_SIMPLE_RX``) with ``$NAME`` looked up (None: could be anything),
+    three-valued: None when the unknown variables decide it; also None for any other form."""
     if _SIMPLE_RX.fullmatch(condition) is None:
-        return True  # parentheses or quotes around unknown values: it may hold
+        return None
 
     def compare(left: str, op: str, right: str) -> bool | None:
         terms = []
         for token in (left, right):
-            if token.startswith("$") and token[1:] not in context:
+            term = lookup(token[1:]) if token.startswith("$") else token
+            if term is None:
                 return None
-            terms.append(str(context[token[1:]]) if token.startswith("$") else token)
+            terms.append(str(term))
         return _COMPARE[op](*terms)
 
-    # three-valued: ``and`` binds tighter than ``or``; None is "depends on the build machine"
     disjuncts: list[bool | None] = []
-    conj: bool | None = True
+    conj: bool | None = True  # of the current ``and`` run
     for m in _PART_RX.finditer(condition):
         left, op, right, joiner = m.groups()
         if joiner == "or":
@@ -125,10 +121,7 @@ def can_hold(condition: str | None, context: dict[str, str]) -> bool:
             value = compare(left, op, right)
             conj = False if conj is False or value is False else (None if value is None or conj is None else True)
     disjuncts.append(conj)
-    return any(d is not False for d in disjuncts)
-
-
-_VAR_RX = re.compile(r"\$([A-Za-z0-9_]+)")
+    return True if True in disjuncts else (None if None in disjuncts else False)
 
 
 def _catkin_parser() -> Any:

@@ -420,3 +420,65 @@ def test_timing_300_line_file():
     ms = (time.perf_counter() - t0) / 10 * 1000
     print(f"\npython frontend: {len(lines)}-line file parse+evaluate {ms:.1f} ms")
     assert len(r.launch.actions) == 2 * i
+
+
+def _shown(acts):
+    return [(a.condition.kind if isinstance(a, L.Group) else None,
+             lit((a.actions[0] if isinstance(a, L.Group) else a).executable)) for a in acts]
+
+
+def test_a_list_a_branch_reorders_keeps_each_item_once():
+    acts = actions("""
+        import os
+        from launch_ros.actions import Node
+
+        def generate_launch_description():
+            nodes = [Node(package='p', executable='a'), Node(package='p', executable='b')]
+            if os.environ.get('X'):
+                nodes.reverse()
+            return nodes
+    """)
+    assert sorted(_shown(acts)) == [(None, "a"), (None, "b")]
+
+
+def test_an_item_removed_by_a_nested_undecided_if_is_there_once():
+    acts = actions("""
+        import os
+        from launch_ros.actions import Node
+
+        def generate_launch_description():
+            nodes = [Node(package='p', executable='a'), Node(package='p', executable='b')]
+            if os.environ.get('X'):
+                if os.environ.get('Y'):
+                    nodes.pop()
+            return nodes
+    """)
+    assert [exe for _, exe in _shown(acts)] == ["a", "b"]
+
+
+def test_appending_under_an_undecided_if_matches_only_what_differs(monkeypatch):
+    # The list's common ends are not matched: an append-only branch leaves nothing to match, so a
+    # loop of such ifs does not pay the matcher's quadratic cost on a growing list.
+    from physai_lint.frontends.python import evaluator
+
+    matched = []
+
+    class Recording(evaluator.SequenceMatcher):  # type: ignore[misc]
+        def __init__(self, junk, a, b, autojunk=True):
+            matched.append(len(a) + len(b))
+            super().__init__(junk, a, b, autojunk=autojunk)
+
+    monkeypatch.setattr(evaluator, "SequenceMatcher", Recording)
+    acts = actions("""
+        import os
+        from launch_ros.actions import Node
+
+        def generate_launch_description():
+            nodes = []
+            for i in range(300):
+                if os.environ.get('X'):
+                    nodes.append(Node(package='p', executable='a'))
+            return nodes
+    """)
+    assert len(acts) == 300
+    assert max(matched) <= 1

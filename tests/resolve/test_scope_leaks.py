@@ -119,3 +119,71 @@ def test_a_group_that_creates_the_list_does_not_leak(tmp_path, demo_package):
     <node pkg="{PKG}" exec="listener" name="inner"/>
   </group>
   <node pkg="{PKG}" exec="talker" name="after"/>""") == []
+
+
+def test_a_leak_from_a_nested_group_reaches_a_node_of_the_enclosing_group(tmp_path, demo_package):
+    found = _leaks(tmp_path, demo_package, f"""\
+  <set_parameter name="mode" value="outer"/>
+  <group>
+    <group>
+      <set_parameter name="mode" value="inner"/>
+    </group>
+    <node pkg="{PKG}" exec="talker" name="x"/>
+  </group>""")
+    assert [(line, related) for line, _, related in found] == [(5, [2, 7])]
+
+
+def test_a_leaked_value_is_the_one_the_action_saw(tmp_path, demo_package):
+    # SetParameter.execute evaluates the value when it runs: "false" here, whatever sim is later
+    found = _leaks(tmp_path, demo_package, f"""\
+  <arg name="sim" default="true"/>
+  <set_parameter name="use_sim_time" value="true"/>
+  <group>
+    <let name="sim" value="false"/>
+    <set_parameter name="use_sim_time" value="$(var sim)"/>
+  </group>
+  <node pkg="{PKG}" exec="talker" name="after"/>""")
+    assert [line for line, _, _ in found] == [6]
+
+
+def test_a_leaked_parameter_file_is_a_change(tmp_path, demo_package):
+    found = _leaks(tmp_path, demo_package, f"""\
+  <set_parameter name="use_sim_time" value="true"/>
+  <group>
+    <set_parameters_from_file filename="$(find-pkg-share demo)/config/a.yaml"/>
+  </group>
+  <node pkg="{PKG}" exec="talker" name="after"/>""")
+    assert [(line, message.split(" inside")[0]) for line, message, _ in found] == [(4, "parameter file")]
+
+
+def test_a_node_setting_the_parameter_itself_gets_nothing_from_the_leak(tmp_path, demo_package):
+    assert _leaks(tmp_path, demo_package, f"""\
+  <set_parameter name="rate" value="1.0"/>
+  <group>
+    <set_parameter name="rate" value="5.0"/>
+  </group>
+  <node pkg="{PKG}" exec="talker" name="after">
+    <param name="rate" value="2.0"/>
+  </node>""") == []
+
+
+def test_every_node_reached_through_includes_is_named(tmp_path, demo_package):
+    robot = f"""<launch>
+  <node pkg="{PKG}" exec="talker" name="t"/>
+</launch>
+"""
+    main = """<launch>
+  <set_remap from="chatter" to="chatter_top"/>
+  <group>
+    <set_remap from="rosout_agg" to="agg_inner"/>
+  </group>
+  <group><push_ros_namespace namespace="r1"/><include file="$(find-pkg-share demo)/launch/robot.launch.xml"/></group>
+  <group><push_ros_namespace namespace="r2"/><include file="$(find-pkg-share demo)/launch/robot.launch.xml"/></group>
+</launch>
+"""
+    pkg = demo_package({"launch/main.launch.xml": main, "launch/robot.launch.xml": robot})
+    report = run_check(CheckOptions(paths=[str(pkg / "launch/main.launch.xml")], workspace=str(tmp_path),
+                                    select=("L111",)), cwd=str(tmp_path))
+    assert len(report.findings) == 1
+    assert 'to node "/r1/t", node "/r2/t":' in report.findings[0].message
+    assert [r.span.line for r in report.findings[0].related] == [2, 2]  # the outer action, the one node

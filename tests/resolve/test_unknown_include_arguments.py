@@ -51,3 +51,31 @@ def test_arguments_read_from_a_file_at_launch_may_pass_any_name(tmp_path, demo_p
 def test_known_arguments_that_leave_one_out_are_reported(tmp_path, demo_package):
     assert [m.split(";")[0] for m in _l104(tmp_path, demo_package, '{"port": "22"}')] == [
         'include of "inner.launch.py" does not pass required argument "robot_ip" (given: port)']
+
+
+FORWARD = """
+import os
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, IncludeLaunchDescription, OpaqueFunction
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+
+
+def setup(context):
+    share = get_package_share_directory("demo")
+    return [IncludeLaunchDescription(
+        PythonLaunchDescriptionSource(os.path.join(share, "launch", "inner.launch.py")),
+        launch_arguments=context.launch_configurations.items())]
+
+
+def generate_launch_description():
+    return LaunchDescription([DeclareLaunchArgument("robot_ip", default_value="10.0.0.1"),
+                              OpaqueFunction(function=setup)])
+"""
+
+
+def test_forwarded_launch_configurations_may_pass_any_name(tmp_path, demo_package):
+    pkg = demo_package({"launch/inner.launch.py": INNER, "launch/outer.launch.py": FORWARD})
+    report = run_check(CheckOptions(paths=[str(pkg / "launch/outer.launch.py")], workspace=str(tmp_path),
+                                    select=("L104",)), cwd=str(tmp_path))
+    assert report.findings == []

@@ -1,12 +1,15 @@
 """L102 unused-argument and reads the linter cannot see one by one: code that iterates, copies or
 hands on ``context.launch_configurations`` reads every configuration, and nav2_common's
 ParseMultiRobotPose("robots") takes ``robots:=`` from the command line itself."""
+import pytest
+
 from physai_lint.engine import CheckOptions, run_check
 
 OPAQUE = """
 from launch import LaunchDescription
 from launch.actions import DeclareLaunchArgument, OpaqueFunction
 from launch_ros.actions import Node
+from some_helpers import helper
 
 
 def setup(context):
@@ -41,12 +44,39 @@ def _l102(tmp_path, demo_package, text: str) -> list[str]:
     return [f.message for f in report.findings]
 
 
-def test_the_whole_launch_configurations_mapping_reads_every_argument(tmp_path, demo_package):
-    for body in ('return [Node(package="demo_nodes_cpp", executable="talker", '
-                 'parameters=[dict(context.launch_configurations)])]',
-                 "for name, value in context.launch_configurations.items():\n        print(name, value)",
-                 "for name in context.launch_configurations:\n        print(name)"):
-        assert _l102(tmp_path, demo_package, OPAQUE.format(body=body)) == [], body
+@pytest.mark.parametrize("body", [
+    'return [Node(package="demo_nodes_cpp", executable="talker", parameters=[dict(context.launch_configurations)])]',
+    "for name, value in context.launch_configurations.items():\n        print(name, value)",
+    "for name in context.launch_configurations:\n        print(name)",
+    "helper(context.launch_configurations)",
+    "helper(**context.launch_configurations)",
+    "print({**context.launch_configurations})",
+    "print(context.launch_configurations[helper()])",
+])
+def test_the_whole_launch_configurations_mapping_reads_every_argument(tmp_path, demo_package, body):
+    assert _l102(tmp_path, demo_package, OPAQUE.format(body=body)) == []
+
+
+def test_a_whole_mapping_read_in_an_included_file_reads_the_includers_arguments(tmp_path, demo_package):
+    child = OPAQUE.format(body="print(dict(context.launch_configurations))").replace(
+        'DeclareLaunchArgument("rate", default_value="10"), ', "")
+    parent = """
+import os
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, IncludeLaunchDescription
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+
+
+def generate_launch_description():
+    child = os.path.join(get_package_share_directory("demo"), "launch", "child.launch.py")
+    return LaunchDescription([DeclareLaunchArgument("rate", default_value="10"),
+                              IncludeLaunchDescription(PythonLaunchDescriptionSource(child))])
+"""
+    pkg = demo_package({"launch/a.launch.py": parent, "launch/child.launch.py": child})
+    report = run_check(CheckOptions(paths=[str(pkg / "launch/a.launch.py")], workspace=str(tmp_path),
+                                    select=("L102",)), cwd=str(tmp_path))
+    assert report.findings == []
 
 
 def test_a_single_other_read_still_leaves_it_unused(tmp_path, demo_package):
@@ -57,3 +87,10 @@ def test_a_single_other_read_still_leaves_it_unused(tmp_path, demo_package):
 
 def test_parse_multi_robot_pose_reads_its_argument(tmp_path, demo_package):
     assert _l102(tmp_path, demo_package, MULTI) == []
+
+
+def test_parse_multi_robot_pose_given_a_substitution_reads_it(tmp_path, demo_package):
+    text = MULTI.replace('ParseMultiRobotPose("robots")', 'ParseMultiRobotPose(LaunchConfiguration("robots"))')
+    text = text.replace("from launch.actions import DeclareLaunchArgument",
+                        "from launch.actions import DeclareLaunchArgument\nfrom launch.substitutions import LaunchConfiguration")
+    assert _l102(tmp_path, demo_package, text) == []

@@ -9,7 +9,12 @@ import sys
 import pytest
 from catkin_pkg.condition import evaluate_condition
 
-from physai_lint.workspace.package_xml import _evaluate_condition, simple_condition
+from physai_lint.workspace.package_xml import (
+    _evaluate_condition,
+    can_hold,
+    parse_manifest,
+    simple_condition,
+)
 
 # catkin_pkg.condition builds its grammar with pyparsing names deprecated since pyparsing 3
 pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")
@@ -133,14 +138,10 @@ def _catkin(condition: str) -> bool | ValueError:
     ("($BUILD_TYPE == 'sim')", True),  # not the simple form: it may hold
 ])
 def test_a_dependency_counts_when_its_condition_can_hold(condition, holds):
-    from physai_lint.workspace.package_xml import can_hold
-
     assert can_hold(condition, CONTEXT) is holds
 
 
 def test_a_dependency_on_a_build_variable_declares_the_package(tmp_path):
-    from physai_lint.workspace.package_xml import parse_manifest
-
     text = """<?xml version="1.0"?>
 <package format="3">
   <name>demo</name><version>0.0.1</version><description>d</description>

@@ -181,3 +181,36 @@ set_target_properties(node PROPERTIES OUTPUT_NAME ${NAME_FROM_CACHE})
 install(TARGETS node DESTINATION lib/${PROJECT_NAME})
 """)
     assert info.executables == set() and not info.executables_complete
+
+
+def test_cmake_target_properties_as_cmake_applies_them(tmp_path):
+    info = _cmake(tmp_path, """
+project(pkg)
+add_executable(pre src/a.cpp)
+set_target_properties(pre PROPERTIES PREFIX lib_)
+add_executable(grown src/a.cpp)
+set_target_properties(grown PROPERTIES OUTPUT_NAME x)
+set_property(TARGET grown APPEND_STRING PROPERTY OUTPUT_NAME _y)
+add_executable(unset src/a.cpp)
+set_target_properties(unset PROPERTIES OUTPUT_NAME gone)
+set_property(TARGET unset PROPERTY OUTPUT_NAME)
+add_executable(empty src/a.cpp)
+set_target_properties(empty PROPERTIES RUNTIME_OUTPUT_NAME "" OUTPUT_NAME other)
+add_executable(tool src/a.cpp)
+set_target_properties(tool PROPERTIES OUTPUT_NAME tool_cpp)
+install(TARGETS pre grown unset empty tool DESTINATION lib/${PROJECT_NAME})
+install(PROGRAMS scripts/tool DESTINATION lib/${PROJECT_NAME})
+""", ("src/a.cpp", "scripts/tool"))
+    assert info.executables == {"lib_pre", "x_y", "unset", "empty", "tool_cpp", "tool"}
+    assert info.executables_complete
+
+
+def test_cmake_a_list_output_name_makes_the_executables_incomplete(tmp_path):
+    info = _cmake(tmp_path, """
+project(pkg)
+add_executable(node src/a.cpp)
+set_target_properties(node PROPERTIES OUTPUT_NAME x)
+set_property(TARGET node APPEND PROPERTY OUTPUT_NAME y)
+install(TARGETS node DESTINATION lib/${PROJECT_NAME})
+""")
+    assert info.executables == set() and not info.executables_complete

@@ -3,10 +3,11 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
+from physai_lint.model.launch import EVERY_CONFIGURATION
 from physai_lint.model.span import Span
 
 from . import bounds, symbolic
-from .runtime import EVERY_CONFIGURATION, FileHandle, KPath, LaunchConfigsSym, Opaque, SymStr, UserFunc
+from .runtime import FileHandle, KPath, LaunchConfigsSym, Opaque, SymStr, UserFunc
 
 if TYPE_CHECKING:
     from .evaluator import Evaluator
@@ -19,6 +20,10 @@ _PURE = {
 }
 
 
+# Builtins that look at a value's kind or size only: they read no launch configuration.
+_SHAPE_ONLY = frozenset({"len", "isinstance", "type", "id", "bool", "hasattr", "callable", "issubclass"})
+
+
 def call_builtin(ev: Evaluator, name: str, args: list[Any], kwargs: dict[str, Any], span: Span) -> Any:
     from .calls import call_user, iterate
     from .evaluator import is_concrete
@@ -27,7 +32,7 @@ def call_builtin(ev: Evaluator, name: str, args: list[Any], kwargs: dict[str, An
         from .classes import zero_arg_super
 
         return zero_arg_super(ev, span)
-    if any(isinstance(a, LaunchConfigsSym) for a in [*args, *kwargs.values()]):
+    if name not in _SHAPE_ONLY and any(isinstance(a, LaunchConfigsSym) for a in [*args, *kwargs.values()]):
         ev.escaped.add(EVERY_CONFIGURATION)  # dict(context.launch_configurations): all of them
     for a in list(args) + list(kwargs.values()):
         if isinstance(a, Opaque) and name not in ("print", "isinstance", "list", "tuple"):

@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING, Any
 
 import yaml
 
+from physai_lint.model.launch import EVERY_CONFIGURATION
 from physai_lint.model.span import Span
 from physai_lint.model.values import FindPackage, LaunchConfig, StrMethod, Text
 
@@ -23,7 +24,6 @@ from .runtime import (
     ClassValue,
     ContextSym,
     Decorator,
-    EVERY_CONFIGURATION,
     FileHandle,
     Instance,
     KPath,
@@ -99,8 +99,10 @@ def env_read(ev: Evaluator, name: Any, span: Span) -> Any:
 def subscript(ev: Evaluator, obj: Any, key: Any, span: Span) -> Any:
     if isinstance(obj, Ref) and obj.qual == "os.environ":
         return env_read(ev, key, span)
-    if isinstance(obj, LaunchConfigsSym) and isinstance(key, str):
-        return SymStr((LaunchConfig((Text(str(key), span),), None, span),))
+    if isinstance(obj, LaunchConfigsSym):
+        if isinstance(key, str):
+            return SymStr((LaunchConfig((Text(str(key), span),), None, span),))
+        ev.escaped.add(EVERY_CONFIGURATION)  # a name known only at launch time: any of them
     if isinstance(obj, (dict, list, tuple, str)) and not isinstance(key, Opaque):
         try:
             result = obj[key]
@@ -245,8 +247,8 @@ def _call_cached(ev: Evaluator, f: UserFunc, args: list[Any], kwargs: dict[str, 
     return result
 
 
-_ARGV_READERS = ("nav2_common.launch.ParseMultiRobotPose",
-                 "nav2_common.launch.parse_multirobot_pose.ParseMultiRobotPose")
+_MULTI_ROBOT_POSE = ("nav2_common.launch.ParseMultiRobotPose",
+                     "nav2_common.launch.parse_multirobot_pose.ParseMultiRobotPose")
 
 
 def call_ref(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any], span: Span) -> Any:
@@ -261,7 +263,7 @@ def call_ref(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any], 
         return SymStr((FindPackage(to_value(pkg, span), kind, span, eager=True),))  # type: ignore[arg-type]
     if qual == "launch.utilities.perform_substitutions" and len(args) >= 2:
         return _performed(ev, args[1], span)
-    if qual in _ARGV_READERS:
+    if qual in _MULTI_ROBOT_POSE:
         # nav2_common's ParseMultiRobotPose(name) takes ``name:=...`` from the command line
         # (sys.argv) itself: the argument is read, with a value the linter cannot know.
         name = args[0] if args else kwargs.get("target_argument")
@@ -352,8 +354,7 @@ def call_method(ev: Evaluator, obj: Any, name: str, args: list[Any], kwargs: dic
         if name == "get" and args and isinstance(args[0], str):
             default = to_value(args[1], span) if len(args) > 1 and args[1] is not None else None
             return SymStr((LaunchConfig((Text(str(args[0]), span),), default, span),))
-        if name not in ("__contains__",):
-            ev.escaped.add(EVERY_CONFIGURATION)  # items(), values(), copy(): the whole mapping
+        ev.escaped.add(EVERY_CONFIGURATION)  # items(), values(), copy(), get(name unknown): any
         return Opaque(f"launch_configurations.{name}", span)
     if isinstance(obj, FileHandle):
         if name == "read":

@@ -7,7 +7,9 @@ turns the affected call's result into ``Opaque``. ``RecursionError`` is caught t
 from __future__ import annotations
 
 import ast
+from collections import Counter
 from collections.abc import Callable
+from difflib import SequenceMatcher
 from typing import Any
 
 from physai_lint.model.launch import Condition
@@ -300,26 +302,29 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
         watched = _lists_of(snapshot)
         envs: list[dict[str, Any]] = []
         rets: list[Any] = []
-        for tag, block in zip(tags, (body, orelse)):
-            scope.vars = dict(snapshot)
+        try:
+            for k, (tag, block) in enumerate(zip(tags, (body, orelse))):
+                scope.vars = dict(snapshot)
+                if k:
+                    for w in watched:
+                        w.start()
+                self.cond_stack.append(tag)
+                ret = NO
+                try:
+                    self.exec_block(block, scope)
+                except Return as r:
+                    ret = r.value
+                except (Break, Continue, Raise):
+                    pass
+                finally:
+                    self.cond_stack.pop()
+                    for w in watched:
+                        w.after(tag)
+                envs.append(scope.vars)
+                rets.append(ret)
+        finally:  # also when the walk is aborted in a branch: both branches' items are kept
             for w in watched:
-                w.start()
-            self.cond_stack.append(tag)
-            ret = NO
-            try:
-                self.exec_block(block, scope)
-            except Return as r:
-                ret = r.value
-            except (Break, Continue, Raise):
-                pass
-            finally:
-                self.cond_stack.pop()
-                for w in watched:
-                    w.after(tag)
-            envs.append(scope.vars)
-            rets.append(ret)
-        for w in watched:
-            w.mark()
+                w.mark()
         if rets[0] is not NO and rets[1] is not NO:
             raise Return(self.merge(rets[0], rets[1], tags))
         for i in (0, 1):
@@ -392,10 +397,10 @@ def _made_under(v: Any, tag: CondTag) -> tuple[Any, ...]:
 
 class _Watched:
     """A list that existed before an undecided ``if``. Each branch starts from the list as it was
-    (``start``) and leaves it as it wants (``after``); ``mark`` then puts together what both left:
-    an item both kept is there unconditionally, one only a branch kept or added is ``Branched``
-    under that branch's tag (a ``pop``/``remove`` in the body leaves the item to the else, and
-    the other way round), in the order the branches left them."""
+    (``start``) and leaves it as it wants (``after``); ``mark`` then puts together what both left,
+    by identity: an item both kept is there once, as it is; one only a branch kept or added is
+    ``Branched`` under that branch's tag (a ``pop``/``remove`` in the body leaves the item to the
+    else, and the other way round), in the order the branches left them."""
 
     def __init__(self, items: list[Any]) -> None:
         self.items = items
@@ -403,37 +408,68 @@ class _Watched:
         self.results: list[tuple[list[Any], CondTag]] = []
 
     def start(self) -> None:
-        self.items[:] = self.before
+        if not _same(self.items, self.before):
+            self.items[:] = self.before
 
     def after(self, tag: CondTag) -> None:
-        self.results.append((list(self.items), tag))
+        self.results.append((self.before if _same(self.items, self.before) else list(self.items), tag))
 
     def mark(self) -> None:
         if len(self.results) != 2:
-            return
+            return  # the walk was aborted in the body: the list stays as the body left it
         (first, tag0), (second, tag1) = self.results
-        if _same(first, self.before) and _same(second, self.before):
+        if first is self.before and second is self.before:
             return  # neither branch touched it
-        from difflib import SequenceMatcher
-
-        # by identity: the items are launch objects and user values, compared as the same object
-        matcher = SequenceMatcher(None, [id(x) for x in first], [id(x) for x in second], autojunk=False)
-        old = {id(x) for x in self.before}
-        merged: list[Any] = []
-        for op, i1, i2, j1, j2 in matcher.get_opcodes():
+        # the common ends (an append-only branch leaves the whole list before as a prefix) need
+        # no matching: what is left is short, and the matcher quadratic in it
+        head = 0
+        while head < min(len(first), len(second)) and first[head] is second[head]:
+            head += 1
+        tail = 0
+        while tail < min(len(first), len(second)) - head and first[-1 - tail] is second[-1 - tail]:
+            tail += 1
+        mid0, mid1 = first[head:len(first) - tail], second[head:len(second) - tail]
+        # an item both branches hold (reordered, or wrapped by a nested undecided if) is there
+        # once: the wrapped form, which keeps the inner condition, when one side has it
+        keys0, keys1 = [_key(x) for x in mid0], [_key(x) for x in mid1]
+        counts0, counts1 = Counter(keys0), Counter(keys1)
+        shared = {k: max(n, counts1[k]) for k, n in counts0.items() if k in counts1}  # how many times
+        chosen = {k: x for k, x in zip(keys1, mid1) if k in shared}
+        chosen.update((k, x) for k, x in zip(keys0, mid0) if k in shared and (
+            isinstance(x, Branched) or not isinstance(chosen.get(k), Branched)))
+        old = {_key(x) for x in self.before}
+        merged: list[Any] = list(first[:head])
+        placed: Counter[int] = Counter()
+        for op, i1, i2, j1, j2 in SequenceMatcher(None, keys0, keys1, autojunk=False).get_opcodes():
+            sides: tuple[tuple[list[Any], list[int], CondTag], ...] = (
+                (mid0[i1:i2], keys0[i1:i2], tag0), (mid1[j1:j2], keys1[j1:j2], tag1))
             if op == "equal":
-                merged.extend(first[i1:i2])
-                continue
+                sides = sides[:1]
             # where the branches differ: the items that were there before, then the new ones
-            sides = ((first[i1:i2], tag0), (second[j1:j2], tag1))
             for keep in (True, False):
-                merged.extend(self._branched(x, tag) for part, tag in sides for x in part
-                              if (id(x) in old) == keep)
+                for part, keys, tag in sides:
+                    for x, k in zip(part, keys):
+                        if (k in old) != keep:
+                            continue
+                        if k in shared:
+                            if placed[k] < shared[k]:
+                                placed[k] += 1
+                                merged.append(chosen[k])
+                        else:
+                            merged.append(self._branched(x, tag))
+        merged.extend(first[len(first) - tail:])
         self.items[:] = merged
 
     @staticmethod
     def _branched(item: Any, tag: CondTag) -> Any:
-        return Branched("added under a condition known only at launch time", None, item, tag)
+        return Branched("present only under a condition known only at launch time", None, item, tag)
+
+
+def _key(item: Any) -> int:
+    """An item's identity, through the ``Branched`` wrappers of nested undecided ifs."""
+    while isinstance(item, Branched):
+        item = item.value
+    return id(item)
 
 
 def _same(a: list[Any], b: list[Any]) -> bool:
@@ -441,8 +477,9 @@ def _same(a: list[Any], b: list[Any]) -> bool:
 
 
 def _lists_of(variables: dict[str, Any]) -> list[_Watched]:
-    """The lists a branch could append to: local variables' lists, and the entities of local
-    ``LaunchDescription`` objects (``ld.add_action``)."""
+    """The lists a branch could change that ``_Watched`` follows: the current scope's list
+    variables and the entities of its ``LaunchDescription`` objects (``ld.add_action``). Lists of
+    enclosing scopes, or inside dicts, are still changed by both branches one after the other."""
     out: dict[int, _Watched] = {}
     for v in variables.values():
         if isinstance(v, LObj):

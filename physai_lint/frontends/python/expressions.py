@@ -76,6 +76,7 @@ class ExpressionsMixin:
             v = self.ev(kw.value, scope)
             if kw.arg is None:
                 if not isinstance(v, dict):
+                    self.escape([v])  # f(**context.launch_configurations) reads every one
                     return Opaque("call with an unknown **kwargs", self.span(n, scope))
                 for k, x in v.items():
                     kwargs[str(k)] = x
@@ -230,6 +231,7 @@ class ExpressionsMixin:
             value = self.ev(v, scope)
             if k is None:
                 if not isinstance(value, dict):
+                    self.escape([value])  # {**context.launch_configurations} reads every one
                     return Opaque("dict with an unknown **item", self.span(n, scope))
                 out.update(value)
                 continue

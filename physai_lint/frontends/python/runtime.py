@@ -101,9 +101,10 @@ class LObj:
 
 @dataclass(eq=False)
 class Branched(Opaque):
-    """An item a branch of an ``if`` the evaluator could not decide added to a list made before
-    the ``if`` (``params.append(path)`` under ``if path != '':``). Unknown to everything but the
-    action and description lists, which keep ``value`` under the condition of that branch."""
+    """An item of a list made before an ``if`` the evaluator could not decide that only one
+    branch left there: added (``params.append(path)`` under ``if path != '':``), or kept where the
+    other branch removed it. Unknown to everything but the action and description lists, which
+    keep ``value`` under the condition of that branch."""
 
     value: Any = None
     tag: Any = None  # CondTag
@@ -157,10 +158,6 @@ class ContextSym:
 class LaunchConfigsSym:
     """``context.launch_configurations``."""
 
-
-# In ``PythonFacts.escaped``: the whole ``context.launch_configurations`` mapping was read
-# (iterated, copied, handed on), so every configuration may be.
-EVERY_CONFIGURATION = "*"
 
 
 @dataclass(eq=False)

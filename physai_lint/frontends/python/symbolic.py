@@ -6,13 +6,13 @@ import ast
 import os
 from typing import Any
 
-from physai_lint.model.launch import ConcatFact, TypeFact
+from physai_lint.model.launch import EVERY_CONFIGURATION, ConcatFact, TypeFact
 from physai_lint.model.span import Span
 from physai_lint.model.values import BoolOp, Compare, IfElse, PathJoin, Value
 
 from . import api, bounds
 from .convert_values import to_value
-from .runtime import EVERY_CONFIGURATION, KPath, LaunchConfigsSym, LObj, Opaque, SymBool, SymStr
+from .runtime import KPath, LaunchConfigsSym, LObj, Opaque, SymBool, SymStr
 
 MAX_SIZE = 100_000
 

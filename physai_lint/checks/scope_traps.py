@@ -67,11 +67,12 @@ def timer_loses_scope(ctx: CheckContext) -> Iterator[Diagnostic]:
 def scoped_group_leak(ctx: CheckContext) -> Iterator[Diagnostic]:
     seen: set[object] = set()
     for launch in ctx.launches:
+        by_id = {n.id: n for n in launch.nodes} if launch.scope_leaks else {}
         for span, what, outer, receivers in launch.scope_leaks:
             if span in seen:
                 continue
             seen.add(span)
-            names = sorted(receivers)
+            names = sorted({_who(by_id[i]) for i in receivers if i in by_id})
             more = f" and {len(names) - 3} more" if len(names) > 3 else ""
             yield Diagnostic(
                 "L111", span,

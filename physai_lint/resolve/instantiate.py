@@ -54,14 +54,14 @@ class Frame:
 class Leak:
     """A SetRemap/SetParameter/SetParametersFromFile appended, inside a scoped group, to a list an
     outer scope created (``GroupAction`` copies the configurations shallowly): reported when a node
-    launched after the group receives it (``receivers``: who, by name, and where)."""
+    launched after the group receives it (``receivers``: node ids, and where)."""
 
     item: Any  # kept: its id is the key of the leak
     span: Span
     what: str
     group: int  # the innermost group the action ran in
     outer: Span  # the outer action that created the list
-    receivers: dict[str, Span] = field(default_factory=dict)
+    receivers: dict[str, Span] = field(default_factory=dict)  # node id -> its action
 
 
 def combine(a: bool | None, b: bool | None) -> bool | None:
@@ -83,7 +83,7 @@ class Instantiator:
         self.deferred: list[tuple[tuple[ir.Action, ...], dict[str, Any], Frame]] = []
         self.handlers: list[tuple[ir.EventHandler, Frame, dict[str, Any]]] = []
         # id(global list) -> (the scoped-group depth it was created at, the action that created it)
-        self.list_depth: dict[int, tuple[int, Span]] = {}
+        self.list_origin: dict[int, tuple[int, Span]] = {}
         self.open_groups: list[int] = []  # the scoped groups being walked, outermost first
         self._groups = 0
         self.leaks: dict[int, Leak] = {}  # id(list item) -> a leak waiting for a node after its group
@@ -270,28 +270,28 @@ class Instantiator:
         if not isinstance(lst, list):
             lst = []
             scope.configs[key] = lst
-            self.list_depth[id(lst)] = (len(self.open_groups), span)
+            self.list_origin[id(lst)] = (len(self.open_groups), span)
         else:
-            depth, outer = self.list_depth.get(id(lst), (0, span))
+            depth, outer = self.list_origin.get(id(lst), (0, span))
             if len(self.open_groups) > depth and self.frame.deferred is None:
                 # Appended to an outer scope's list: a leak once a node outside the group this
                 # action runs in (the innermost) reads it.
                 self.leaks[id(item)] = Leak(item, span, what, self.open_groups[-1], outer)
         lst.append(item)
 
-    def leaks_reaching(self, lst: list[Any], who: str, node_span: Span,
+    def leaks_reaching(self, lst: list[Any], node_id: str, node_span: Span,
                        effective: Callable[[list[Any], int], bool]) -> None:
-        """A node (``who``, at ``node_span``) reads a global list: the leaked items in it whose
+        """A node (``node_id``, at ``node_span``) reads a global list: the leaked items in it whose
         group is over (the node comes after the group, or in a later one) reach it, unless
         ``effective`` says they change nothing for it."""
         for i, item in enumerate(lst):
             leak = self.leaks.get(id(item))
-            if leak is None or leak.group in self.open_groups or who in leak.receivers \
+            if leak is None or leak.group in self.open_groups or node_id in leak.receivers \
                     or not effective(lst, i):
                 continue
             if not leak.receivers:
                 self.result.scope_leaks.append((leak.span, leak.what, leak.outer, leak.receivers))
-            leak.receivers[who] = node_span
+            leak.receivers[node_id] = node_span
 
     # ---- groups and includes ---------------------------------------------------------------------
     def _group(self, a: ir.Group, scope: Scope) -> None:

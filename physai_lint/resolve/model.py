@@ -196,7 +196,7 @@ class LaunchResult:
     # Every PushRosNamespace: (span, the namespace as written, the resulting namespace or None)
     pushed_namespaces: list[tuple[Span, str | None, str | None]] = field(default_factory=list)
     # SetRemap/SetParameter inside a scoped group that reach nodes after it: (span, what, the outer
-    # action that created the list, the nodes reached: their names as messages say them -> spans)
+    # action that created the list, the nodes reached: node id -> the node's action)
     scope_leaks: list[tuple[Span, str, Span, dict[str, Span]]] = field(default_factory=list)
     use_sim_time_actions: list[Span] = field(default_factory=list)
     # Opaque parts whose effects are unknown: (span, reason)

@@ -73,10 +73,10 @@ class NodeBuilder:
         """A ``SetParameter``'s value, typed as the node gets it (through ``-p name:=text``)."""
         return _cli_typed(resolve_pvalue(name, pvalue, lambda x: self.inst.ev.eval(x, scope), span))
 
-    def _global_sources(self, scope: Scope, node_id: str, who: str, node_span: Span,
+    def _global_sources(self, scope: Scope, node_id: str, node_span: Span,
                         own: tuple[ir.ParamSource, ...]) -> tuple[list[EffRemap], list[ParamSourceR]]:
-        """The global remaps and parameters a node gets (``who``, ``own``: its name and its own
-        parameters, for the scoped-group leaks that reach it)."""
+        """The global remaps and parameters a node gets (``own``: its own parameters, for the
+        scoped-group leaks that reach it)."""
         remaps: list[EffRemap] = []
         remap_list = scope.configs.get(REMAPS) or []
         for src, dst, span, reached in remap_list:
@@ -95,9 +95,9 @@ class NodeBuilder:
                 _, path, _, span = item
                 params.append(self._file(path, span, "global", False, scope))
         if self.inst.leaks:
-            self.inst.leaks_reaching(remap_list, who, node_span, _remap_matters)
+            self.inst.leaks_reaching(remap_list, node_id, node_span, _remap_matters)
             sets = {e.name for src in own if isinstance(src, ir.ParamDict) for e in src.entries}
-            self.inst.leaks_reaching(param_list, who, node_span,
+            self.inst.leaks_reaching(param_list, node_id, node_span,
                                      lambda lst, i: _parameter_matters(lst, i, sets, self.inst.leaks))
         return remaps, params
 
@@ -182,8 +182,7 @@ class NodeBuilder:
         namespace, ns_specified = self._namespace(ns_raw, ns_given, scope)
         fqn = names.join_fqn(namespace, name) if (namespace and name) else None
         node_id = self._id()
-        remaps, gparams = self._global_sources(scope, node_id, _label(fqn, package, executable), a.span,
-                                               a.parameters)
+        remaps, gparams = self._global_sources(scope, node_id, a.span, a.parameters)
         key = fqn if (name_given and ns_specified and fqn) else "/**"
         params = gparams + self._own_params(a.parameters, scope, key)
         remaps += self._remaps(a.remappings, scope)
@@ -229,8 +228,7 @@ class NodeBuilder:
         for _key, value, _span in cn.extra_arguments:  # read when the component is loaded
             self.inst.ev.eval(value, scope)
         node_id = self._id()
-        remaps, gparams = self._global_sources(scope, node_id, _label(fqn, package, plugin), cn.span,
-                                               cn.parameters)
+        remaps, gparams = self._global_sources(scope, node_id, cn.span, cn.parameters)
         params = gparams + self._own_params(cn.parameters, scope, fqn or "/**")
         inst_ = NodeInstance(
             id=node_id, kind="composable_node", package=package, executable=plugin, name=name,
@@ -315,11 +313,6 @@ class NodeBuilder:
                 res.never_started.append((h.span, f"its target action is never added to the launch description ({h.event})"))
             elif seen is False:
                 res.never_started.append((h.span, f"its target action is disabled by its condition ({h.event})"))
-
-
-def _label(fqn: str | None, package: str | None, executable: str | None) -> str:
-    """A node as a message names it: ``node "/ns/name"``, else ``"package/executable"``."""
-    return f'node "{fqn}"' if fqn else f'"{package or "?"}/{executable or "?"}"'
 
 
 def _remap_matters(lst: list[Any], i: int) -> bool:

@@ -1,6 +1,4 @@
 """L004 substitution-concatenation says once what was done to which substitution."""
-from physai_lint.engine import CheckOptions, run_check
-
 LAUNCH = """
 import os
 from launch import LaunchDescription
@@ -21,11 +19,9 @@ def generate_launch_description():
 """
 
 
-def test_each_message_names_the_substitution_and_what_was_done_once(tmp_path, demo_package):
-    pkg = demo_package({"launch/a.launch.py": LAUNCH})
-    report = run_check(CheckOptions(paths=[str(pkg / "launch/a.launch.py")], workspace=str(tmp_path),
-                                    select=("L004",)), cwd=str(tmp_path))
-    assert [f.message.split(":")[0] for f in report.findings] == [
+def test_each_message_names_the_substitution_and_what_was_done_once(demo_findings):
+    findings = demo_findings({"launch/a.launch.py": LAUNCH}, "launch/a.launch.py", "L004")
+    assert [message.split(":")[0] for _, message in findings] == [
         'substitution LaunchConfiguration("dof") is joined with + at description time',
         "substitution FindPackageShare is passed to os.path.join at description time",
         'substitution LaunchConfiguration("dof") is put into an f-string at description time',

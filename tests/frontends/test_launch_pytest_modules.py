@@ -1,6 +1,5 @@
 """L006 missing-generate-launch-description: a launch_pytest module (run by pytest, its
 description given by a ``@launch_pytest.fixture``) is no launch file, whatever its name."""
-from physai_lint.engine import CheckOptions, run_check
 
 MODULE = """
 import launch
@@ -20,17 +19,15 @@ def test_talker_starts():
 """
 
 
-def _l006(tmp_path, demo_package, imports: str, fixture: str) -> list[str]:
-    pkg = demo_package({"test/test_talker.launch.py": MODULE.format(imports=imports, fixture=fixture)})
-    report = run_check(CheckOptions(paths=[str(pkg / "test/test_talker.launch.py")], workspace=str(tmp_path),
-                                    select=("L006",)), cwd=str(tmp_path))
-    return [f.code for f in report.findings]
+def _l006(demo_findings, imports: str, fixture: str) -> list[str]:
+    files = {"test/test_talker.launch.py": MODULE.format(imports=imports, fixture=fixture)}
+    return ["L006" for _ in demo_findings(files, "test/test_talker.launch.py", "L006")]
 
 
-def test_a_launch_pytest_module_is_not_reported(tmp_path, demo_package):
-    assert _l006(tmp_path, demo_package, "import launch_pytest", "launch_pytest.fixture") == []
-    assert _l006(tmp_path, demo_package, "from launch_pytest import fixture", "fixture") == []
+def test_a_launch_pytest_module_is_not_reported(demo_findings):
+    assert _l006(demo_findings, "import launch_pytest", "launch_pytest.fixture") == []
+    assert _l006(demo_findings, "from launch_pytest import fixture", "fixture") == []
 
 
-def test_a_module_without_it_still_is(tmp_path, demo_package):
-    assert _l006(tmp_path, demo_package, "", "pytest.fixture") == ["L006"]
+def test_a_module_without_it_still_is(demo_findings):
+    assert _l006(demo_findings, "", "pytest.fixture") == ["L006"]

@@ -194,6 +194,12 @@ def test_object_made_before_the_branch_stays_unknown():
     assert isinstance(opaque, L.OpaqueAction) and "condition known only at launch time" in opaque.reason
 
 
+def _shown(acts):
+    """(condition kind or None, executable) of each action: what a branch's condition marked."""
+    return [(a.condition.kind if isinstance(a, L.Group) else None,
+             lit((a.actions[0] if isinstance(a, L.Group) else a).executable)) for a in acts]
+
+
 def test_made_before_added_in_a_branch_is_under_the_branch():
     # a node made before an undecided if and added in one branch runs only under that branch
     acts = actions("""
@@ -214,8 +220,7 @@ def test_made_before_added_in_a_branch_is_under_the_branch():
                 ld.add_action(a)
             return ld
     """)
-    shown = [(a.condition.kind if isinstance(a, L.Group) else None,
-              lit((a.actions[0] if isinstance(a, L.Group) else a).executable)) for a in acts]
+    shown = _shown(acts)
     assert shown == [("if", "rviz2"), (None, "always"), ("if", "made_inside"), ("unless", "rviz2")]
 
 
@@ -232,8 +237,7 @@ def test_an_item_a_branch_removes_stays_under_the_other_branch():
             return nodes
     """)
     # "b" is launched only when the body is not taken, "c" only when it is
-    shown = [(a.condition.kind if isinstance(a, L.Group) else None,
-              lit((a.actions[0] if isinstance(a, L.Group) else a).executable)) for a in acts]
+    shown = _shown(acts)
     assert shown == [(None, "a"), ("unless", "b"), ("if", "c")]
 
 
@@ -250,8 +254,7 @@ def test_each_branch_starts_from_the_list_as_it_was():
                 nodes.append(Node(package='p', executable=str(len(nodes))))
             return nodes
     """)
-    shown = [(a.condition.kind if isinstance(a, L.Group) else None,
-              lit((a.actions[0] if isinstance(a, L.Group) else a).executable)) for a in acts]
+    shown = _shown(acts)
     assert shown == [("unless", "a"), ("unless", "1")]
 
 
@@ -420,11 +423,6 @@ def test_timing_300_line_file():
     ms = (time.perf_counter() - t0) / 10 * 1000
     print(f"\npython frontend: {len(lines)}-line file parse+evaluate {ms:.1f} ms")
     assert len(r.launch.actions) == 2 * i
-
-
-def _shown(acts):
-    return [(a.condition.kind if isinstance(a, L.Group) else None,
-             lit((a.actions[0] if isinstance(a, L.Group) else a).executable)) for a in acts]
 
 
 def test_a_list_a_branch_reorders_keeps_each_item_once():

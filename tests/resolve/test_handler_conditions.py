@@ -1,8 +1,6 @@
 """S102 handler-never-fires: a handler registered under the same condition as its target is not
 registered when the target is disabled (nav2_bringup's rviz_launch.py), so it is no finding; one
 registered unconditionally for a disabled target still is."""
-from physai_lint.engine import CheckOptions, run_check
-
 LAUNCH = """
 from launch import LaunchDescription
 from launch.actions import DeclareLaunchArgument, EmitEvent, RegisterEventHandler
@@ -23,16 +21,14 @@ def generate_launch_description():
 """
 
 
-def _s102(tmp_path, demo_package, condition: str) -> list[str]:
-    pkg = demo_package({"launch/a.launch.py": LAUNCH.format(condition=condition)})
-    report = run_check(CheckOptions(paths=[str(pkg / "launch/a.launch.py")], workspace=str(tmp_path),
-                                    select=("S102",)), cwd=str(tmp_path))
-    return [f.code for f in report.findings]
+def _s102(demo_findings, condition: str) -> list[str]:
+    return ["S102" for _ in demo_findings({"launch/a.launch.py": LAUNCH.format(condition=condition)},
+                                          "launch/a.launch.py", "S102")]
 
 
-def test_a_handler_under_its_targets_condition_is_not_reported(tmp_path, demo_package):
-    assert _s102(tmp_path, demo_package, "condition=UnlessCondition(use_ns), ") == []
+def test_a_handler_under_its_targets_condition_is_not_reported(demo_findings):
+    assert _s102(demo_findings, "condition=UnlessCondition(use_ns), ") == []
 
 
-def test_an_unconditional_handler_of_a_disabled_target_is(tmp_path, demo_package):
-    assert _s102(tmp_path, demo_package, "") == ["S102"]
+def test_an_unconditional_handler_of_a_disabled_target_is(demo_findings):
+    assert _s102(demo_findings, "") == ["S102"]

@@ -6,8 +6,12 @@ from physai_lint.engine import CheckOptions, run_check
 PKG = "demo_nodes_cpp"
 
 
-def _leaks(tmp_path, demo_package, body: str) -> list[tuple[int, str, list[int]]]:
-    path = demo_package({"launch/main.launch.xml": f"<launch>\n{body}\n</launch>\n"}) / "launch/main.launch.xml"
+def _leaks(tmp_path, demo_package, body: str, **more: str) -> list[tuple[int, str, list[int]]]:
+    """(line, message, related lines) of the L111 findings of ``<launch>body</launch>``, with
+    ``more`` launch files (name -> text) beside it."""
+    files = {"launch/main.launch.xml": f"<launch>\n{body}\n</launch>\n",
+             **{f"launch/{name}.launch.xml": text for name, text in more.items()}}
+    path = demo_package(files) / "launch/main.launch.xml"
     report = run_check(CheckOptions(paths=[str(path)], workspace=str(tmp_path), select=("L111",)),
                        cwd=str(tmp_path))
     return [(f.span.line, f.message, [r.span.line for r in f.related]) for f in report.findings]
@@ -172,18 +176,14 @@ def test_every_node_reached_through_includes_is_named(tmp_path, demo_package):
   <node pkg="{PKG}" exec="talker" name="t"/>
 </launch>
 """
-    main = """<launch>
+    found = _leaks(tmp_path, demo_package, """\
   <set_remap from="chatter" to="chatter_top"/>
   <group>
     <set_remap from="rosout_agg" to="agg_inner"/>
   </group>
   <group><push_ros_namespace namespace="r1"/><include file="$(find-pkg-share demo)/launch/robot.launch.xml"/></group>
-  <group><push_ros_namespace namespace="r2"/><include file="$(find-pkg-share demo)/launch/robot.launch.xml"/></group>
-</launch>
-"""
-    pkg = demo_package({"launch/main.launch.xml": main, "launch/robot.launch.xml": robot})
-    report = run_check(CheckOptions(paths=[str(pkg / "launch/main.launch.xml")], workspace=str(tmp_path),
-                                    select=("L111",)), cwd=str(tmp_path))
-    assert len(report.findings) == 1
-    assert 'to node "/r1/t", node "/r2/t":' in report.findings[0].message
-    assert [r.span.line for r in report.findings[0].related] == [2, 2]  # the outer action, the one node
+  <group><push_ros_namespace namespace="r2"/><include file="$(find-pkg-share demo)/launch/robot.launch.xml"/></group>""",
+                   robot=robot)
+    assert len(found) == 1
+    assert 'to node "/r1/t", node "/r2/t":' in found[0][1]
+    assert found[0][2] == [2, 2]  # the outer action, the one node

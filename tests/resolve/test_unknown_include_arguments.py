@@ -1,7 +1,6 @@
 """L104 missing-required-argument needs the names an include passes: launch_arguments that cannot
 be known (computed from a file read at launch, forwarded from ``context.launch_configurations``)
 may pass any name, so nothing is reported; arguments known to leave one out still are."""
-from physai_lint.engine import CheckOptions, run_check
 
 INNER = """
 from launch import LaunchDescription
@@ -36,20 +35,18 @@ def generate_launch_description():
 """
 
 
-def _l104(tmp_path, demo_package, args: str) -> list[str]:
-    pkg = demo_package({"launch/inner.launch.py": INNER, "launch/outer.launch.py": OUTER.replace("{ARGS}", args),
-                        "config/robot.yaml": "robot_ip: 10.0.0.1\n"})
-    report = run_check(CheckOptions(paths=[str(pkg / "launch/outer.launch.py")], workspace=str(tmp_path),
-                                    select=("L104",)), cwd=str(tmp_path))
-    return [f.message for f in report.findings]
+def _l104(demo_findings, outer: str) -> list[str]:
+    files = {"launch/inner.launch.py": INNER, "launch/outer.launch.py": outer,
+             "config/robot.yaml": "robot_ip: 10.0.0.1\n"}
+    return [message for _, message in demo_findings(files, "launch/outer.launch.py", "L104")]
 
 
-def test_arguments_read_from_a_file_at_launch_may_pass_any_name(tmp_path, demo_package):
-    assert _l104(tmp_path, demo_package, "{k: str(v) for k, v in robot.items()}") == []
+def test_arguments_read_from_a_file_at_launch_may_pass_any_name(demo_findings):
+    assert _l104(demo_findings, OUTER.replace("{ARGS}", "{k: str(v) for k, v in robot.items()}")) == []
 
 
-def test_known_arguments_that_leave_one_out_are_reported(tmp_path, demo_package):
-    assert [m.split(";")[0] for m in _l104(tmp_path, demo_package, '{"port": "22"}')] == [
+def test_known_arguments_that_leave_one_out_are_reported(demo_findings):
+    assert [m.split(";")[0] for m in _l104(demo_findings, OUTER.replace("{ARGS}", '{"port": "22"}'))] == [
         'include of "inner.launch.py" does not pass required argument "robot_ip" (given: port)']
 
 
@@ -74,8 +71,5 @@ def generate_launch_description():
 """
 
 
-def test_forwarded_launch_configurations_may_pass_any_name(tmp_path, demo_package):
-    pkg = demo_package({"launch/inner.launch.py": INNER, "launch/outer.launch.py": FORWARD})
-    report = run_check(CheckOptions(paths=[str(pkg / "launch/outer.launch.py")], workspace=str(tmp_path),
-                                    select=("L104",)), cwd=str(tmp_path))
-    assert report.findings == []
+def test_forwarded_launch_configurations_may_pass_any_name(demo_findings):
+    assert _l104(demo_findings, FORWARD) == []

@@ -3,8 +3,6 @@ hands on ``context.launch_configurations`` reads every configuration, and nav2_c
 ParseMultiRobotPose("robots") takes ``robots:=`` from the command line itself."""
 import pytest
 
-from physai_lint.engine import CheckOptions, run_check
-
 OPAQUE = """
 from launch import LaunchDescription
 from launch.actions import DeclareLaunchArgument, OpaqueFunction
@@ -37,11 +35,9 @@ def generate_launch_description():
 """
 
 
-def _l102(tmp_path, demo_package, text: str) -> list[str]:
-    pkg = demo_package({"launch/a.launch.py": text})
-    report = run_check(CheckOptions(paths=[str(pkg / "launch/a.launch.py")], workspace=str(tmp_path),
-                                    select=("L102",)), cwd=str(tmp_path))
-    return [f.message for f in report.findings]
+def _l102(demo_findings, text: str, **more: str) -> list[str]:
+    files = {"launch/a.launch.py": text, **{f"launch/{name}.launch.py": t for name, t in more.items()}}
+    return [message for _, message in demo_findings(files, "launch/a.launch.py", "L102")]
 
 
 @pytest.mark.parametrize("body", [
@@ -53,11 +49,11 @@ def _l102(tmp_path, demo_package, text: str) -> list[str]:
     "print({**context.launch_configurations})",
     "print(context.launch_configurations[helper()])",
 ])
-def test_the_whole_launch_configurations_mapping_reads_every_argument(tmp_path, demo_package, body):
-    assert _l102(tmp_path, demo_package, OPAQUE.format(body=body)) == []
+def test_the_whole_launch_configurations_mapping_reads_every_argument(demo_findings, body):
+    assert _l102(demo_findings, OPAQUE.format(body=body)) == []
 
 
-def test_a_whole_mapping_read_in_an_included_file_reads_the_includers_arguments(tmp_path, demo_package):
+def test_a_whole_mapping_read_in_an_included_file_reads_the_includers_arguments(demo_findings):
     child = OPAQUE.format(body="print(dict(context.launch_configurations))").replace(
         'DeclareLaunchArgument("rate", default_value="10"), ', "")
     parent = """
@@ -73,24 +69,21 @@ def generate_launch_description():
     return LaunchDescription([DeclareLaunchArgument("rate", default_value="10"),
                               IncludeLaunchDescription(PythonLaunchDescriptionSource(child))])
 """
-    pkg = demo_package({"launch/a.launch.py": parent, "launch/child.launch.py": child})
-    report = run_check(CheckOptions(paths=[str(pkg / "launch/a.launch.py")], workspace=str(tmp_path),
-                                    select=("L102",)), cwd=str(tmp_path))
-    assert report.findings == []
+    assert _l102(demo_findings, parent, child=child) == []
 
 
-def test_a_single_other_read_still_leaves_it_unused(tmp_path, demo_package):
+def test_a_single_other_read_still_leaves_it_unused(demo_findings):
     body = 'print(context.launch_configurations.get("other"))'
-    assert _l102(tmp_path, demo_package, OPAQUE.format(body=body)) == [
+    assert _l102(demo_findings, OPAQUE.format(body=body)) == [
         'launch argument "rate" is declared but never read']
 
 
-def test_parse_multi_robot_pose_reads_its_argument(tmp_path, demo_package):
-    assert _l102(tmp_path, demo_package, MULTI) == []
+def test_parse_multi_robot_pose_reads_its_argument(demo_findings):
+    assert _l102(demo_findings, MULTI) == []
 
 
-def test_parse_multi_robot_pose_given_a_substitution_reads_it(tmp_path, demo_package):
+def test_parse_multi_robot_pose_given_a_substitution_reads_it(demo_findings):
     text = MULTI.replace('ParseMultiRobotPose("robots")', 'ParseMultiRobotPose(LaunchConfiguration("robots"))')
     text = text.replace("from launch.actions import DeclareLaunchArgument",
                         "from launch.actions import DeclareLaunchArgument\nfrom launch.substitutions import LaunchConfiguration")
-    assert _l102(tmp_path, demo_package, text) == []
+    assert _l102(demo_findings, text) == []

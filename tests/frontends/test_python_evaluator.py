@@ -157,6 +157,32 @@ def test_opaque_function_branch_returns_and_failure():
     assert isinstance(bad, L.OpaqueAction) and bad.reason and bad.actions == ()
 
 
+def test_launch_descriptions_returned_early_each_keep_their_branch():
+    # an early `return LaunchDescription(...)` under an undecided if, then another at the end (and a
+    # second early return in between): every description is kept, each under the conditions that
+    # lead to it, rather than the whole file becoming unknown
+    acts = actions("""
+        import os
+        from launch import LaunchDescription
+        from launch_ros.actions import Node
+
+        def generate_launch_description():
+            if os.environ.get('SIM'):
+                return LaunchDescription([Node(package='p', executable='sim')])
+            if os.environ.get('REPLAY'):
+                return LaunchDescription([Node(package='p', executable='replay')])
+            return LaunchDescription([Node(package='p', executable='real')])
+    """)
+    def under(acts, kinds=()):
+        for a in acts:
+            if isinstance(a, L.Group):
+                yield from under(a.actions, kinds + (a.condition.kind if a.condition else None,))
+            else:
+                yield kinds, lit(a.executable)
+
+    assert list(under(acts)) == [(("if",), "sim"), (("unless", "if"), "replay"), (("unless", "unless"), "real")]
+
+
 def test_object_made_in_both_branches_keeps_each_under_its_branch():
     # zed-ros2-wrapper's pattern: one variable, a different object per branch, used after the if
     (stereo, mono, load) = actions("""

@@ -32,7 +32,7 @@ from .convert_actions import ActionBuilder
 from .core import Signal
 from .evaluator import Abort, Evaluator
 from .facts import call_facts, undefined_names
-from .runtime import LObj, Opaque, UserFunc
+from .runtime import Alternatives, LObj, Opaque, UserFunc
 
 __all__ = ["parse_python_launch"]
 
@@ -92,9 +92,9 @@ def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | N
     actions: tuple[Any, ...] = ()
     if has_gld:
         builder = ActionBuilder(ev)
-        if isinstance(result, Opaque):
+        if isinstance(result, Opaque) and not isinstance(result, Alternatives):
             actions = (OpaqueAction("opaque@gld", result.span or Span.whole_file(path), None, result.reason),)
-        elif isinstance(result, (LObj, list, tuple)):
+        elif isinstance(result, (LObj, list, tuple, Alternatives)):
             try:
                 actions = builder.actions(result, Span.whole_file(path))
             except RecursionError:

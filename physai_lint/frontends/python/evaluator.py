@@ -54,7 +54,9 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
         self.depth = 0
         self.bounds = bounds.SizeGuard()
         self.cond_stack: list[CondTag] = []
-        self.pending: list[list[Any]] = []
+        # per function being run: its early returns from undecided ``if``s, each with the tags of
+        # (the branch that returned, the rest of the function)
+        self.pending: list[list[tuple[Any, tuple[CondTag, CondTag]]]] = []
         self.frame_tags: list[int] = []
         self.modules: dict[str, Any] = {}
         self.frames: list[tuple[UserFunc, Scope]] = []  # user functions being called, innermost last
@@ -331,7 +333,7 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
             if rets[i] is not NO:
                 scope.vars = envs[1 - i]
                 if self.pending:
-                    self.pending[-1].append(rets[i])
+                    self.pending[-1].append((rets[i], (tags[i], tags[1 - i])))
                     # the rest of the function runs only when this branch was not taken
                     self.cond_stack.append(tags[1 - i])
                     self.frame_tags[-1] += 1
@@ -377,8 +379,8 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
             extra = self.frame_tags.pop()
             if extra:
                 del self.cond_stack[len(self.cond_stack) - extra:]
-        for p in pend:
-            result = p if result is None else self.merge(p, result)
+        for p, tags in reversed(pend):  # the latest early return is decided last, just before the end
+            result = p if result is None else self.merge(p, result, tags)
         return result
 
 

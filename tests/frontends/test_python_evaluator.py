@@ -284,6 +284,30 @@ def test_each_branch_starts_from_the_list_as_it_was():
     assert shown == [("unless", "a"), ("unless", "1")]
 
 
+def test_lists_of_enclosing_scopes_and_inside_dicts_are_followed_per_branch():
+    # a module-level list a helper appends to, and a list kept in a dict: an object made before the
+    # undecided if and added in one branch is launched under that branch's condition only
+    acts = actions("""
+        import os
+        from launch_ros.actions import Node
+
+        NODES = []
+
+        def add(node):
+            if os.environ.get('SIM'):
+                NODES.append(node)
+
+        def generate_launch_description():
+            add(Node(package='p', executable='sim_only'))
+            debug = Node(package='p', executable='debug')
+            groups = {'extra': [Node(package='p', executable='always')]}
+            if os.environ.get('DEBUG'):
+                groups['extra'].append(debug)
+            return NODES + groups['extra']
+    """)
+    assert _shown(acts) == [("if", "sim_only"), (None, "always"), ("if", "debug")]
+
+
 def test_unknown_values_stay_unknown():
     acts = actions("""
         import os

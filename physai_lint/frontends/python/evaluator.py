@@ -301,7 +301,7 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
             unknown = (UnknownValue(f"a Python condition that cannot be evaluated statically ({reason})", span),)
             tags = (CondTag(Condition("if", unknown, span, "if")), CondTag(Condition("unless", unknown, span, "else")))
         snapshot = dict(scope.vars)
-        watched = _lists_of(snapshot)
+        watched = _lists_of(scope)
         envs: list[dict[str, Any]] = []
         rets: list[Any] = []
         try:
@@ -478,14 +478,25 @@ def _same(a: list[Any], b: list[Any]) -> bool:
     return len(a) == len(b) and all(x is y for x, y in zip(a, b))
 
 
-def _lists_of(variables: dict[str, Any]) -> list[_Watched]:
-    """The lists a branch could change that ``_Watched`` follows: the current scope's list
-    variables and the entities of its ``LaunchDescription`` objects (``ld.add_action``). Lists of
-    enclosing scopes, or inside dicts, are still changed by both branches one after the other."""
+def _lists_of(scope: Scope) -> list[_Watched]:
+    """The lists a branch could change that ``_Watched`` follows: the list variables of this scope
+    and of the scopes around it (the module's included), the lists that are values of their dicts,
+    and the entities of their ``LaunchDescription`` objects (``ld.add_action``)."""
     out: dict[int, _Watched] = {}
-    for v in variables.values():
+
+    def watch(v: Any) -> None:
         if isinstance(v, LObj):
             v = v.extra.get("entities")
         if type(v) is list and id(v) not in out:
             out[id(v)] = _Watched(v)
+
+    s: Scope | None = scope
+    while s is not None:
+        for v in s.vars.values():
+            if type(v) is dict:
+                for item in v.values():
+                    watch(item)
+            else:
+                watch(v)
+        s = s.parent
     return list(out.values())

@@ -48,10 +48,12 @@ def _kind_name(kind: str | None) -> str:
             "string": "a string"}.get(kind or "", kind or "?")
 
 
-def _written(node: NodeInstance) -> dict[Span, tuple[str, bool, str]]:
-    """value span -> (text as written, quoted/string literal, where) for the node's launch
-    parameters; they take precedence over the parameter files' values (``_file_written``)."""
-    out: dict[Span, tuple[str, bool, str]] = {}
+def _written(node: NodeInstance) -> dict[tuple[Span, str], tuple[str, bool, str]]:
+    """(value span, parameter name) -> (text as written, quoted/string literal, where) for the
+    node's launch parameters; they take precedence over the parameter files' values
+    (``_file_written``). The name is part of the key: the entries of a dict comprehension share
+    one span."""
+    out: dict[tuple[Span, str], tuple[str, bool, str]] = {}
     for src in node.param_sources:
         if isinstance(src, ResolvedParamDict):
             for prm in src.params:
@@ -71,11 +73,11 @@ def _file_written(ctx: CheckContext) -> dict[Span, tuple[str, bool, str]]:
     return out
 
 
-def _add_launch_param(out: dict[Span, tuple[str, bool, str]], prm: ResolvedParam) -> None:
+def _add_launch_param(out: dict[tuple[Span, str], tuple[str, bool, str]], prm: ResolvedParam) -> None:
     if prm.typed_by == "yaml" and prm.raw is not None:
-        out[prm.span] = (prm.raw.strip(), False, "launch")
+        out[(prm.span, prm.name)] = (prm.raw.strip(), False, "launch")
     elif prm.typed_by == "python" and isinstance(prm.value, str):
-        out[prm.span] = (prm.value, True, "python")
+        out[(prm.span, prm.name)] = (prm.value, True, "python")
 
 
 def _problem(text: str, quoted: bool, origin: str, kind: str | None, value: Any,
@@ -100,8 +102,8 @@ def _problem(text: str, quoted: bool, origin: str, kind: str | None, value: Any,
         return ((f"the Python string '{text}' reaches the node as {_fmt(value)}: launch_ros "
                  f"writes it unquoted to its temporary params file and rcl reads it as "
                  f"{_kind_name(kind)}"),
-                ("give the value the type you mean; a string of digits needs a declared string "
-                 f'parameter or a params file with "{text}" quoted'))
+                ("give the value the type you mean: a number for the number; for the text, a "
+                 f'declared string parameter or a params file with "{text}" quoted'))
     return _plain_problem(text, kind, value)
 
 
@@ -158,7 +160,7 @@ def ambiguous_typing(ctx: CheckContext) -> Iterator[Diagnostic]:
         decls = (iface.parameters or {}) if iface is not None else {}
         yield from _launch_nulls(node, seen)
         for name, ep in sorted(params.items()):
-            how = None if ep.origin is None else written.get(ep.origin) or file_written.get(ep.origin)
+            how = None if ep.origin is None else written.get((ep.origin, name)) or file_written.get(ep.origin)
             if how is None or (ep.origin, name) in seen:
                 continue
             text, quoted, origin = how

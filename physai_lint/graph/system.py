@@ -89,7 +89,11 @@ class SystemGraph:
         return any(e.remap == index for e in self._index().get(node_id, ()))
 
     def has_unknown_endpoints(self) -> bool:
-        """True when some active node's interface is unknown or a name could not be resolved."""
+        """True when some active node's interface is unknown, a name could not be resolved, or the
+        launch has a part that cannot be known statically (an include outside the workspace, an
+        action the evaluator could not follow), which may start any node."""
+        if self.launch.opaque:
+            return True
         active = [n for n in self.launch.nodes if n.active is not False and n.kind != "process"]
         return any(n.id not in self.known for n in active) or any(e.resolved is None for e in self.endpoints)
 

@@ -60,3 +60,17 @@ def test_extractors_record_them() -> None:
               "        self.create_subscription(OccupancyGrid, self.topic, self.cb, 1)\n")
     py = extract_py([("a.py", source)])
     assert py.subscribers == [] and py.unnamed == [("subscribers", "nav_msgs/msg/OccupancyGrid")]
+
+
+def test_an_include_that_cannot_be_followed_may_start_the_publisher(tmp_path: Path, demo_package: Any) -> None:
+    # an include of a package outside the workspace (released, not built here) may start any node:
+    # the topic nobody in the workspace publishes might be its
+    def found(include: str) -> list[str]:
+        pkg = demo_package({"CMakeLists.txt": CMAKE, "src/mapper.cpp": MAPPER,
+                            "src/user.cpp": USER.replace("TYPE", "sensor_msgs::msg::Image"),
+                            "launch/a.launch.xml": LAUNCH.replace("</launch>", include + "</launch>")})
+        opts = CheckOptions(paths=[str(pkg / "launch/a.launch.xml")], workspace=str(tmp_path), cache=False)
+        return [f.message for f in run_check(opts).findings if f.code == "T201"]
+
+    assert len(found("")) == 1
+    assert found('<include file="$(find-pkg-share realsense2_camera)/launch/rs_launch.py"/>') == []

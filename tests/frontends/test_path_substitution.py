@@ -28,3 +28,25 @@ def test_path_substitution_and_truediv(demo_graph):
         assert nodes[name]["parameters_complete"] is True, name
     # cfg_file is undeclared: the path is unknown, and so are the parameters it brings
     assert nodes["unknown_part"]["parameters_complete"] is False
+
+
+FIND = """
+import os
+from launch import LaunchDescription
+from launch_ros.actions import Node
+from launch_ros.substitutions import FindPackageShare
+
+def generate_launch_description():
+    share = FindPackageShare("other").find("demo")
+    return LaunchDescription([
+        Node(package="demo", executable="a", name="found", parameters=[os.path.join(share, "config", "p.yaml")]),
+    ])
+"""
+
+
+def test_find_package_share_find_is_the_named_package_directory(demo_graph):
+    # FindPackageShare(...).find(pkg) is launch_ros's get_package_share_directory(pkg), right away
+    files = {"config/p.yaml": "/**:\n  ros__parameters:\n    rate: 5.0\n", "launch/a.launch.py": FIND}
+    nodes = demo_graph(files, "launch/a.launch.py")
+    assert nodes["found"]["parameters"] == {"rate": 5.0}
+    assert nodes["found"]["parameters_complete"] is True

@@ -109,3 +109,42 @@ def generate_launch_description():
 def test_configurations_handed_to_a_library_may_be_read(tmp_path, demo_package):
     # moveit_configs_utils turns the mappings into a xacro Command: launch reads them
     assert _findings(tmp_path, demo_package, "a.launch.py", BUILDER) == [("L102", "unused")]
+
+
+STORED = """
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, OpaqueFunction
+from launch.conditions import IfCondition
+from launch.substitutions import LaunchConfiguration, PythonExpression
+from launch_ros.actions import Node
+from demo_description.robot_description_loader import RobotDescriptionLoader
+
+
+def setup(context):
+    nodes = []
+    if IfCondition(PythonExpression([LaunchConfiguration("localization"), " == 'true'"])).evaluate(context):
+        nodes.append(Node(package="demo", executable="localizer"))
+    return nodes
+
+
+def generate_launch_description():
+    loader = RobotDescriptionLoader()
+    loader.use_camera = LaunchConfiguration("use_camera")
+    settings = loader.settings()
+    settings["port"] = LaunchConfiguration("port_name")
+    return LaunchDescription([
+        DeclareLaunchArgument("use_camera", default_value="false"),
+        DeclareLaunchArgument("port_name", default_value="/dev/ttyUSB0"),
+        DeclareLaunchArgument("localization", default_value="false"),
+        DeclareLaunchArgument("unused", default_value="x"),
+        Node(package="demo", executable="rsp", parameters=[{"robot_description": loader.load()}]),
+        OpaqueFunction(function=setup),
+    ])
+"""
+
+
+def test_configurations_stored_in_objects_not_followed_may_be_read(tmp_path, demo_package):
+    # an attribute or item set on an object the evaluator cannot follow (crane_plus's description
+    # loader), and a condition evaluated by hand (rtabmap's IfCondition(...).evaluate(context)):
+    # the object may read what it holds
+    assert _findings(tmp_path, demo_package, "a.launch.py", STORED) == [("L102", "unused")]

@@ -337,6 +337,10 @@ def _performed(ev: Evaluator, subst: Any, span: Span) -> SymStr:
     return SymStr(value)
 
 
+_FIND_PACKAGE = {"launch_ros.substitutions.FindPackageShare": "share",
+                 "launch_ros.substitutions.FindPackagePrefix": "prefix"}
+
+
 def call_method(ev: Evaluator, obj: Any, name: str, args: list[Any], kwargs: dict[str, Any], span: Span) -> Any:
     if isinstance(obj, LObj):
         if name in ("add_action", "add_entity") and "entities" in obj.extra and args:
@@ -344,7 +348,13 @@ def call_method(ev: Evaluator, obj: Any, name: str, args: list[Any], kwargs: dic
             return None
         if name == "perform" and symbolic.is_subst(obj):
             return _performed(ev, obj, span)
-        ev.escape([*args, *kwargs.values()])
+        if name == "find" and obj.qual in _FIND_PACKAGE and (args or "package_name" in kwargs):
+            # FindPackageShare(...).find(pkg): ament_index's directory of pkg, found right away
+            pkg = args[0] if args else kwargs["package_name"]
+            return SymStr((FindPackage(to_value(pkg, span), _FIND_PACKAGE[obj.qual], span, eager=True),))  # type: ignore[arg-type]
+        # an unknown method (IfCondition(...).evaluate(context), a helper object's own method)
+        # may use what the object holds as well as its arguments
+        ev.escape([obj, *args, *kwargs.values()])
         return Opaque(f"method {name} of {api.short(obj.qual)}", span)
     if isinstance(obj, ContextSym):
         if name == "perform_substitution" and args:

@@ -35,7 +35,8 @@ from .core import (
 )
 from .expressions import ExpressionsMixin
 from .positions import SpanMaker
-from .runtime import Alternatives, Branched, CondTag, LObj, ModuleValue, Opaque, Ref, SymBool, UserFunc
+from .runtime import (Alternatives, Branched, ClassValue, CondTag, Instance, LObj, ModuleValue, Opaque, Ref, SymBool,
+                      UserFunc)
 
 __all__ = ["BUILTIN_NAMES", "MAX_DEPTH", "Abort", "Evaluator", "ModuleCtx", "Scope", "is_concrete", "truth"]
 
@@ -127,10 +128,16 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
                     obj[key] = value
                 except Exception:  # noqa: BLE001, S110 - a failing store leaves the container as it was
                     pass
+            else:  # stored into an object the evaluator does not follow: it may read it later
+                self.escape([value])
         elif isinstance(t, ast.Starred):
             self.assign(t.value, value, scope)
         elif isinstance(t, ast.Attribute):
-            classes.set_attr(self.ev(t.value, scope), t.attr, value)
+            obj = self.ev(t.value, scope)
+            if isinstance(obj, (Instance, ClassValue)):
+                classes.set_attr(obj, t.attr, value)
+            else:  # e.g. loader.use_camera = LaunchConfiguration('use_camera') on an unknown loader
+                self.escape([value])
 
     def st_FunctionDef(self, s: ast.FunctionDef, scope: Scope) -> None:
         value: Any = self.make_func(s, scope)

@@ -47,8 +47,11 @@ def timer_loses_scope(ctx: CheckContext) -> Iterator[Diagnostic]:
     for _, node in all_nodes(ctx, include_inactive=False):
         if not node.in_timer or not node.timer_lost:
             continue
+        # a namespace is not lost when the node gives an absolute one, or ends up in that very
+        # namespace anyway (its own namespace= names it: create3's "not pushed in EventHandler")
         lost = [item for item in node.timer_lost
-                if not (item.startswith("namespace ") and _namespace_absolute(node))]
+                if not (item.startswith("namespace ") and
+                        (_namespace_absolute(node) or item == f'namespace "{node.namespace}"'))]
         if not lost or node.span in seen:
             continue
         seen.add(node.span)

@@ -343,7 +343,7 @@ class Instantiator:
             return self.frame.lost
         lost = []
         ns = scope.configs.get(NS)
-        if ns and ns != self.top_configs.get(NS):
+        if ns and ns != "/" and ns != self.top_configs.get(NS):  # PushRosNamespace('') pushes "/"
             lost.append(f'namespace "{ns}"')
         top_remaps = self.top_configs.get(REMAPS) or []
         for item in scope.configs.get(REMAPS) or []:

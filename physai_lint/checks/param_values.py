@@ -154,7 +154,12 @@ def undeclared(ctx: CheckContext) -> Iterator[Diagnostic]:
 
 
 # Nodes whose output does not depend on the clock: leaving them on wall time is harmless.
-_TIME_AGNOSTIC = frozenset({("tf2_ros", "static_transform_publisher")})
+# Nodes whose output does not depend on their own clock: static transforms, and the Gazebo
+# bridges, which copy each message's stamp from the other side (ros_gz_bridge convert_*_header);
+# one of them is usually the /clock source itself.
+_TIME_AGNOSTIC = frozenset({("tf2_ros", "static_transform_publisher"),
+                            ("ros_gz_bridge", "parameter_bridge"), ("ros_ign_bridge", "parameter_bridge"),
+                            ("ros_gz_image", "image_bridge"), ("ros_ign_image", "image_bridge")})
 
 
 def _fully_known(ctx: CheckContext, node: Any, params: dict[str, Any]) -> bool:

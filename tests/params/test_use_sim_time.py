@@ -1,0 +1,25 @@
+"""P111: nodes whose output does not depend on their clock are not reported when unset."""
+from __future__ import annotations
+
+LAUNCH = """<launch>
+  <node pkg="demo_nodes_cpp" exec="talker" name="talker">
+    <param name="use_sim_time" value="true"/>
+  </node>
+  <node pkg="PKG" exec="EXE" name="other" args="/clock@rosgraph_msgs/msg/Clock[gz.msgs.Clock"/>
+</launch>
+"""
+
+
+def _p111(demo_findings, pkg: str, exe: str) -> list[str]:
+    text = LAUNCH.replace("PKG", pkg).replace("EXE", exe)
+    return [msg for _, msg in demo_findings({"launch/a.launch.xml": text}, "launch/a.launch.xml", "P111")]
+
+
+def test_an_unset_node_on_wall_clock_time_is_reported(demo_findings):
+    (msg,) = _p111(demo_findings, "demo_nodes_cpp", "listener")
+    assert "never gets use_sim_time" in msg
+
+
+def test_the_gazebo_bridges_copy_their_stamps(demo_findings):
+    assert _p111(demo_findings, "ros_gz_bridge", "parameter_bridge") == []
+    assert _p111(demo_findings, "ros_gz_image", "image_bridge") == []

@@ -142,8 +142,8 @@ def unknown_keyword_argument(ctx: CheckContext) -> Iterator[Diagnostic]:
                 if old:
                     yield Diagnostic(
                         "L001", span,
-                        f'{cls}() has no keyword argument "{kw}" (a Dashing-era name, removed since '
-                        f'Eloquent); launch fails with "TypeError: ... unexpected keyword argument '
+                        f'{cls}() has no keyword argument "{kw}" (its name before Foxy, deprecated '
+                        f'in Foxy and removed in Galactic); launch fails with "TypeError: ... unexpected keyword argument '
                         f"'{kw}'\"",
                         help=f'rename it to "{old}"', key=f"{cls}:{kw}")
                     continue

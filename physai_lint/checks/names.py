@@ -6,7 +6,7 @@ import re
 from collections.abc import Iterator
 from typing import Any
 
-from physai_lint.checks._util import all_nodes
+from physai_lint.checks._util import all_nodes, relpath
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.checks.topics import graphs
 from physai_lint.model.findings import Diagnostic, Related
@@ -44,6 +44,18 @@ def duplicate_node_name(ctx: CheckContext) -> Iterator[Diagnostic]:
                 continue
             seen.add(span)
             p = prev
+            sites = _include_sites(launch, node) if p.span == node.span else []
+            if len(sites) > 1:  # one line launched twice because its file is included twice
+                yield Diagnostic(
+                    "N101", span,
+                    f'node "{node.fqn}" is launched twice: {relpath(node.file)} is included '
+                    f"{len(sites)} times in the same namespace; services, parameters and topics of "
+                    "the two collide",
+                    help="include the file once, or give each include its own namespace "
+                         "(PushRosNamespace in a GroupAction around it)",
+                    related=tuple(Related(s, "included here") for s in sites[:5]),
+                    key=node.fqn)
+                continue
             yield Diagnostic(
                 "N101", span,
                 f'node "{node.fqn}" is launched twice (also at line {p.span.line}); '
@@ -51,6 +63,12 @@ def duplicate_node_name(ctx: CheckContext) -> Iterator[Diagnostic]:
                 help="give each node its own name or namespace (PushRosNamespace / namespace=)",
                 related=(Related(p.spans.get("name", p.span), "first launched here"),),
                 key=node.fqn)
+
+
+def _include_sites(launch: LaunchResult, node: NodeInstance) -> list[Any]:
+    """Where the file that launches ``node`` is included (active includes, in file order)."""
+    return sorted({i.span for i in launch.includes if i.active is not False
+                   and node.file in (i.target, i.target_source)}, key=lambda s: (s.file, s.line, s.col))
 
 
 def _restarted_after(edges: _Edges, first: NodeInstance, again: NodeInstance) -> bool:

@@ -112,6 +112,8 @@ def unknown_executable(ctx: CheckContext) -> Iterator[Diagnostic]:
             continue
         hint = (" (did you mean " + " or ".join(f'"{c}"' for c in close) + "?)") if close else ""
         listing = ", ".join(f'"{k}"' for k in sorted(known)[:8]) or "none"
+        if len(known) > 8:
+            listing += f" and {len(known) - 8} more"
         yield Diagnostic(
             "U102", span,
             f'package "{node.package}" has no {what} "{node.executable}"{hint}; it provides: {listing}',

@@ -72,3 +72,13 @@ def test_console_scripts_in_lib_are_executables(tmp_path: Path) -> None:
     found = _u102(tmp_path, SETUP_CFG)
     assert [(line, msg) for line, msg, _ in found] == [
         (8, 'package "pybot" has no executable "driver.py" (did you mean "driver"?); it provides: "driver"')]
+
+
+def test_a_long_list_of_executables_says_how_many_are_left_out(demo_findings):
+    names = [f"tool_{i:02d}" for i in range(11)]
+    cmake = ("project(demo)\n" + "".join(f"add_executable({n} src/{n}.cpp)\n" for n in names)
+             + f"install(TARGETS {' '.join(names)} DESTINATION lib/${{PROJECT_NAME}})\n")
+    launch = '<launch>\n  <node pkg="demo" exec="tool_99" name="t"/>\n</launch>\n'
+    found = demo_findings({"CMakeLists.txt": cmake, "launch/a.launch.xml": launch}, "launch/a.launch.xml", "U102")
+    assert [m.rsplit("it provides: ", 1)[1] for _, m in found] == [
+        ", ".join(f'"{n}"' for n in names[:8]) + " and 3 more"]

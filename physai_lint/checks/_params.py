@@ -20,6 +20,24 @@ def effective(ctx: CheckContext, node: NodeInstance) -> dict[str, Any]:
     return cache[key]  # type: ignore[no-any-return]
 
 
+def fully_known(ctx: CheckContext, node: Any, params: dict[str, Any]) -> bool:
+    """Every parameter source of the node is statically known, so "unset" really is unset."""
+    from physai_lint.resolve.model import ResolvedParamFile, UnknownParams
+
+    if node.fqn is None or any(not ep.certain for ep in params.values()):
+        return False
+    for src in node.param_sources:
+        if isinstance(src, UnknownParams):
+            return False
+        if isinstance(src, ResolvedParamFile) and src.status != "missing":
+            model = ctx.param_files.get(src.source or "") or ctx.param_files.get(src.path or "")
+            if model is None or not model.ok:
+                return False
+        if any(getattr(p, "value", 0) is None for p in getattr(src, "params", ())):
+            return False
+    return True
+
+
 def interface(ctx: CheckContext, node: NodeInstance) -> Any:
     if ctx.interfaces is None:
         return None

@@ -6,7 +6,7 @@ from collections.abc import Iterator
 from typing import Any
 
 from physai_lint.checks._params import decl_source as _source
-from physai_lint.checks._params import effective, interface, nodes_with_params
+from physai_lint.checks._params import effective, fully_known, interface, nodes_with_params
 from physai_lint.checks._util import did_you_mean, where
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic, Related
@@ -162,24 +162,6 @@ _TIME_AGNOSTIC = frozenset({("tf2_ros", "static_transform_publisher"),
                             ("ros_gz_image", "image_bridge"), ("ros_ign_image", "image_bridge")})
 
 
-def _fully_known(ctx: CheckContext, node: Any, params: dict[str, Any]) -> bool:
-    """Every parameter source of the node is statically known, so "unset" really is unset."""
-    from physai_lint.resolve.model import ResolvedParamFile, UnknownParams
-
-    if node.fqn is None or any(not ep.certain for ep in params.values()):
-        return False
-    for src in node.param_sources:
-        if isinstance(src, UnknownParams):
-            return False
-        if isinstance(src, ResolvedParamFile) and src.status != "missing":
-            model = ctx.param_files.get(src.source or "") or ctx.param_files.get(src.path or "")
-            if model is None or not model.ok:
-                return False
-        if any(getattr(p, "value", 0) is None for p in getattr(src, "params", ())):
-            return False
-    return True
-
-
 @rule("P111", "inconsistent-use-sim-time")
 def use_sim_time(ctx: CheckContext) -> Iterator[Diagnostic]:
     seen: set[object] = set()
@@ -193,7 +175,7 @@ def use_sim_time(ctx: CheckContext) -> Iterator[Diagnostic]:
             ep = params.get("use_sim_time")
             if ep is not None and isinstance(ep.value, bool) and ep.origin is not None:
                 values[ep.value].append((node, ep))
-            elif ep is None and node.kind != "container" and _fully_known(ctx, node, params) and \
+            elif ep is None and node.kind != "container" and fully_known(ctx, node, params) and \
                     (node.package, node.executable) not in _TIME_AGNOSTIC:
                 unset.append(node)
         if values[True] and values[False]:

@@ -243,6 +243,8 @@ def _dangling(ctx: CheckContext, mine: str, other: str, code: str) -> Iterator[D
             continue  # a launch of one node (a filter, a driver): its inputs and outputs are others'
         by_topic: dict[str, set[str]] = {}  # topic -> nodes with an endpoint of the other kind
         for o in g.of_kind(other):  # type: ignore[arg-type]
+            if o.when and _exists(ctx, g, o) is False:
+                continue  # off under the node's parameters (imu/mag with use_mag false)
             if o.resolved and _valid(o.resolved):  # an invalid name (N104) is never suggested
                 by_topic.setdefault(o.resolved, set()).add(o.node)
         others = set(by_topic)
@@ -255,6 +257,8 @@ def _dangling(ctx: CheckContext, mine: str, other: str, code: str) -> Iterator[D
         for e in g.of_kind(mine):  # type: ignore[arg-type]
             if e.resolved is None or e.resolved in others or e.resolved.split("/")[-1].startswith("_"):
                 continue
+            if e.when and not _exists(ctx, g, e):
+                continue  # off, or maybe off, under the node's parameters
             if g.unnamed_lifecycle and e.resolved.endswith("/transition_event"):
                 continue  # a lifecycle node of unknown name publishes one: maybe this one
             if any(nid != e.node and kind == other and (t is None or e.type is None or t == e.type)
@@ -281,6 +285,31 @@ def _dangling(ctx: CheckContext, mine: str, other: str, code: str) -> Iterator[D
                 code, span, f'{node.fqn or node.executable} {verb} "{e.resolved}" but {missing}{hint}',
                 help="remap one end so both use the same name, or launch the missing node",
                 key=f"{node.fqn}:{e.resolved}")
+
+
+def _exists(ctx: CheckContext, g: SystemGraph, e: Endpoint) -> bool | None:
+    """Whether the node has ``e``, which exists only under some parameter values (``e.when``):
+    each parameter's effective value, else its declared default once every parameter source of
+    the node is known. None when that cannot be told."""
+    from physai_lint.checks._params import effective, fully_known, interface
+
+    node = g.node(e.node)
+    params = effective(ctx, node)
+    decls = getattr(interface(ctx, node), "parameters", None) or {}
+    exists: bool | None = True
+    for name, wanted in e.when:
+        ep = params.get(name)
+        if ep is not None:
+            if not ep.certain:
+                return None
+            value = ep.value
+        elif name in decls and decls[name].has_default and fully_known(ctx, node, params):
+            value = decls[name].default
+        else:
+            return None
+        if type(value) is not type(wanted) or value != wanted:
+            exists = False
+    return exists
 
 
 @rule("T203", "topic-type-mismatch")

@@ -34,6 +34,7 @@ class Endpoint:
     resolved: str | None  # after remapping; None when unknown
     type: str | None
     remap: int | None  # index into node.remaps of the rule that applied
+    when: tuple[tuple[str, Any], ...] = ()  # parameter values it exists under (interfaces Endpoint.when)
 
 
 @dataclass
@@ -151,7 +152,7 @@ def build_graph(launch: LaunchResult, interfaces: Any, include_inactive: bool = 
                     continue
                 resolved, idx = apply_remaps(expanded, node) if expanded else (None, None)
                 g.endpoints.append(Endpoint(node.id, kind, name, expanded, resolved,
-                                            getattr(ep, "type", None), idx))
+                                            getattr(ep, "type", None), idx, getattr(ep, "when", ())))
     return g
 
 

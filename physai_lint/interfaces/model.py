@@ -24,6 +24,10 @@ class Endpoint:
     name: str
     type: str | None = None
     span: Span | None = None
+    # the node has the endpoint only when each of these parameters has this value (its
+    # effective value, else its declared default): imu_filter_madgwick subscribes to imu/mag
+    # only with use_mag true
+    when: tuple[tuple[str, Any], ...] = ()
 
 
 @dataclass

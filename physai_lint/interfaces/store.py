@@ -62,8 +62,19 @@ def _endpoints(node: yaml.Node, path: str, diags: list[Diagnostic]) -> list[Endp
                 diags.append(Diagnostic("P104", node_span(path, item), "endpoint without a name"))
                 continue
             t = fields.get("type")
+            when = fields.get("when")
+            conditions: tuple[tuple[str, Any], ...] = ()
+            if isinstance(when, yaml.MappingNode):
+                conditions = tuple(sorted((str(k.value), to_python(c)) for k, c in when.value
+                                          if isinstance(k, yaml.ScalarNode) and isinstance(c, yaml.ScalarNode)))
+                if len(conditions) != len(when.value):
+                    diags.append(Diagnostic("P104", node_span(path, when),
+                                            "when maps parameter names to plain values"))
+            elif when is not None:
+                diags.append(Diagnostic("P104", node_span(path, when),
+                                        "when maps parameter names to plain values"))
             out.append(Endpoint(name.value, t.value if isinstance(t, yaml.ScalarNode) else None,
-                                node_span(path, name)))
+                                node_span(path, name), conditions))
         else:
             diags.append(Diagnostic("P104", node_span(path, item), "expected a name"))
     return out
@@ -160,7 +171,9 @@ def _bundled_entry(data: dict[str, Any], path: str) -> NodeInterface:
                 if isinstance(e, str):
                     iface_list.append(Endpoint(e))
                 elif isinstance(e, dict) and "name" in e:
-                    iface_list.append(Endpoint(str(e["name"]), e.get("type")))
+                    when = e.get("when") if isinstance(e.get("when"), dict) else {}
+                    iface_list.append(Endpoint(str(e["name"]), e.get("type"), None,
+                                               tuple(sorted((str(k), v) for k, v in when.items()))))
             setattr(iface, kind, iface_list)
     if "parameters" in data:
         iface.parameters = {}

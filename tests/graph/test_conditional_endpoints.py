@@ -52,3 +52,11 @@ def test_interfaces_files_declare_when() -> None:
     mag, bad = ifaces[("demo", "filter")].subscribers
     assert mag.when == (("mode", 2), ("use_mag", True)) and bad.when == ()
     assert [d.message for d in diags] == ["when maps parameter names to plain values"]
+
+
+def test_a_static_transform_publisher_has_known_topics(tmp_path: Path, demo_package: Any) -> None:
+    # tf2_ros's static_transform_publisher publishes /tf_static only: it no longer makes the
+    # launch's topics unknown
+    tf = '<node pkg="tf2_ros" exec="static_transform_publisher" name="tf" args="0 0 0 0 0 0 a b"/>'
+    found = _t201(tmp_path, demo_package, "</node>\n  " + tf + "\n  <node pkg=\"demo\" exec=\"imu\" name=\"imu2\">")
+    assert found == ['/filter subscribes to "/imu/mag" but nothing publishes it']

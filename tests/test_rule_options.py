@@ -141,3 +141,17 @@ def test_t201_t202_leave_invalid_names_to_n104(tmp_path, demo_package) -> None:
     assert any("//" in m for m in _codes(found, "N104") + _codes(found, "N105"))
     assert not any("//" in m for c, m in found if c in ("T201", "T202"))
     assert any('"/chatter_ou"' in m for m in _codes(found, "T201"))
+
+
+def test_t201_default_ignores_namespaced_tf_and_poses(tmp_path, demo_package) -> None:
+    # a multi-robot launch remaps /tf to /r1/tf: the default patterns cover both
+    interfaces = ("demo/nav:\n  subscribers: [tf, tf_static, initialpose, odom]\n"
+                  "demo/driver:\n  publishers: [scan]\n")
+    launch = ('<launch>\n  <node pkg="demo" exec="nav" name="nav" namespace="r1"/>\n'
+              '  <node pkg="demo" exec="driver" name="driver" namespace="r1"/>\n</launch>\n')
+    pkg = demo_package({"launch/a.launch.xml": launch})
+    (tmp_path / "interfaces.yaml").write_text(interfaces)
+    opts = CheckOptions(paths=[str(pkg / "launch/a.launch.xml")], workspace=str(tmp_path), cache=False,
+                        interfaces=[str(tmp_path / "interfaces.yaml")])
+    found = [f.message for f in run_check(opts).findings if f.code == "T201"]
+    assert found == ['/r1/nav subscribes to "/r1/odom" but nothing publishes it']

@@ -217,9 +217,10 @@ def publication_without_subscriber(ctx: CheckContext) -> Iterator[Diagnostic]:
 # dangling whatever the interfaces list.
 _IMPLICIT_TOPICS = frozenset({"/rosout", "/parameter_events"})
 # The defaults of the rules' ``ignore-topics`` option (rules/T/T201-*.md, T202-*.md).
-T201_IGNORE_TOPICS = ("/clock", "/tf", "/tf_static", "/parameter_events", "/initialpose", "/goal_pose")
-T202_IGNORE_TOPICS = ("/rosout", "/parameter_events", "/tf", "/tf_static", "/diagnostics", "/joint_states",
-                      "/robot_description")
+# "*/tf" is /tf and a robot's namespaced /r1/tf alike (multi-robot launches remap them so).
+T201_IGNORE_TOPICS = ("/clock", "*/tf", "*/tf_static", "/parameter_events", "*/initialpose", "*/goal_pose")
+T202_IGNORE_TOPICS = ("/rosout", "/parameter_events", "*/tf", "*/tf_static", "*/diagnostics", "*/joint_states",
+                      "*/robot_description")
 
 
 _LIFECYCLE_SERVICES = frozenset(name for kind, name, _ in LIFECYCLE_ENDPOINTS if kind == "services")

@@ -187,7 +187,7 @@ def invalid_remap(ctx: CheckContext) -> Iterator[Diagnostic]:
             for side, value in (("from", rule_.src), ("to", rule_.dst)):
                 if value is None or value.startswith("__") or (rule_.span, side) in seen:
                     continue
-                if not value and node.active is False:
+                if not value and node.active is not True:
                     continue  # "" is how an argument switches the node off: with another value it runs
                 reason = _remap_problem(value)
                 if reason:

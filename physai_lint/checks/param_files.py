@@ -19,7 +19,7 @@ def missing(ctx: CheckContext) -> Iterator[Diagnostic]:
     for _, node in all_nodes(ctx):
         for src in node.param_sources:
             if isinstance(src, ResolvedParamFile) and src.status == "missing" and src.span not in seen:
-                if node.active is False and not (src.path or "").strip():
+                if node.active is not True and not (src.path or "").strip():
                     continue  # "" is how an argument switches the node off: with another value it runs
                 seen.add(src.span)
                 what = ("is empty" if not (src.path or "").strip()

@@ -1,5 +1,5 @@
-"""A node switched off by an empty argument is not judged by that empty value (N105, P101): with
-any value that starts it, the remap or the parameter file is another."""
+"""A node switched off by an empty argument, or whose start is uncertain, is not judged by an empty
+value (N105, P101): with any value that starts it, the remap or the parameter file is another."""
 from __future__ import annotations
 
 LAUNCH = """
@@ -42,3 +42,11 @@ def test_an_empty_argument_that_switches_the_node_off_is_not_its_value(demo_find
 
 def test_a_value_that_starts_the_node_is_still_checked(demo_findings):
     assert _codes(demo_findings, "9bad", "") == [("N105", 14)]
+
+
+def test_an_empty_value_of_a_node_whose_start_is_uncertain_is_not_judged(demo_findings):
+    # rtabmap's lidar3d: the node's condition mixes the empty argument with other values
+    text = LAUNCH.replace("default_value='IMU'", "default_value=''").replace("CONFIG", "")
+    text = "import os\n" + text.replace("if imu_topic.perform(context) != '':",
+                                        "if os.environ.get('USE_IMU') or imu_topic.perform(context):")
+    assert [line for line, _ in demo_findings({"launch/a.launch.py": text}, "launch/a.launch.py", "N105")] == []

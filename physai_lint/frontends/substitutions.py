@@ -3,7 +3,7 @@
 Mirrors ``launch/share/launch/frontend/grammar.lark`` and ``launch/frontend/parse_substitution.py``:
 arguments are separated by single spaces, an argument is either a run of unquoted parts (text and
 nested substitutions) or one quoted template, and ``\\c`` stands for ``c`` in every text token. A
-``$`` that does not start a substitution must be escaped (``\\$``). Problems become ``L007``
+``$`` not followed by ``(`` is text (``\\$(`` writes a literal ``$(``). Problems become ``L007``
 diagnostics and the offending substitution an ``Unknown``.
 """
 from __future__ import annotations
@@ -144,16 +144,11 @@ def parse_substitutions(
         i = text.find("$", i)
         if i < 0:
             break
-        if not (i > 0 and text[i - 1] == "\\") and not text.startswith("$!(", i):
+        # launch's grammar (frontend/grammar.lark): a "$" not followed by "(" is text
+        if not (i > 0 and text[i - 1] == "\\") and text.startswith("$(", i):
             if i > seg:
                 parts.append(_text(ctx, seg, i))
-            if text.startswith("$(", i):
-                i = _top_subst(ctx, i, parts)
-            else:
-                ctx.diags.append(_diag(ctx, i, i + 1, f'unescaped "$" in "{text}"',
-                                       'write "\\$" for a literal dollar sign', "$"))
-                parts.append(Unknown("unescaped $", ctx.span(i, i + 1)))
-                i += 1
+            i = _top_subst(ctx, i, parts)
             seg = i
             continue
         i += 1
@@ -200,7 +195,7 @@ def _recover(text: str, start: int) -> int:
 
 # Characters that end an unquoted argument part in each context: "u" unquoted, "s" inside a
 # single-quoted template, "d" inside a double-quoted one.
-_STOP = {"u": " '\"$()", "s": " '$()", "d": ' "$()'}
+_STOP = {"u": " '\"()", "s": " '()", "d": ' "()'}
 
 
 def _subst(ctx: _Ctx, start: int, qctx: str) -> tuple[Subst, int]:
@@ -247,9 +242,6 @@ def _arg(ctx: _Ctx, i: int, qctx: str) -> tuple[Value, int]:
             parts.append(sub)
             seg = i
             continue
-        if ch == "$" and text.startswith("$!(", i):
-            i += 1
-            continue
         if ch in stop:
             break
         i += 1
@@ -280,8 +272,6 @@ def _quoted(ctx: _Ctx, i: int) -> tuple[Value, int]:
             parts.append(sub)
             seg = i
             continue
-        if ch == "$" and not text.startswith("$!(", i):
-            raise _SyntaxError('unescaped "$" in a quoted argument', i)
         if ch == quote:
             if i > seg:
                 parts.append(_text(ctx, seg, i))

@@ -148,7 +148,7 @@ def build_project(opts: CheckOptions, cwd: str | None = None, progress: Any = No
             targets.update(r.files)
             targets.update(_param_sources(r))
     param_models = _load_params(store, sorted(set(found.param_files) | _all_param_sources(launches)),
-                                opts.distro, diagnostics)
+                                opts.distro, diagnostics, _pyyaml_read(launches))
     diagnostics.extend(iface_diags)
     # Packages are read when first asked for; the checked ones are read here, for their problems.
     if hasattr(packages, "read_packages_holding"):
@@ -173,7 +173,15 @@ def _all_param_sources(launches: list[Any]) -> set[str]:
     return set().union(*(_param_sources(r) for r in launches)) if launches else set()
 
 
-def _load_params(store: FileStore, paths: list[str], distro: str, sink: list[Diagnostic]) -> dict[str, Any]:
+def _pyyaml_read(launches: list[Any]) -> set[str]:
+    """Parameter files launch_ros reads with PyYAML: those of composable nodes (rcl reads a
+    node's through --params-file)."""
+    return {s.source for r in launches for n in r.nodes if n.kind == "composable_node"
+            for s in n.param_sources if getattr(s, "status", None) == "ok" and getattr(s, "source", None)}
+
+
+def _load_params(store: FileStore, paths: list[str], distro: str, sink: list[Diagnostic],
+                 pyyaml_read: frozenset[str] | set[str] = frozenset()) -> dict[str, Any]:
     models: dict[str, Any] = {}
     for path in paths:
         model = store.param_file(path, distro)
@@ -182,6 +190,8 @@ def _load_params(store: FileStore, paths: list[str], distro: str, sink: list[Dia
         models[path] = model
         # P1xx structure findings are reported by their rules (checks/param_files.py).
         sink.extend(d for d in model.diagnostics if not d.code.startswith("P"))
+        if path in pyyaml_read:  # a repeated node key loses its first block only there
+            sink.extend(getattr(model, "merged_keys", ()))
     sink.extend(store.param_diagnostics)  # parser crashes (X003)
     store.param_diagnostics.clear()
     return models

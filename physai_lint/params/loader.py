@@ -357,12 +357,13 @@ class _DupTracker:
         if self.pending is not None:
             key, dup_span, first = self.pending
             self.pending = None
-            if isinstance(ev, yaml.MappingStartEvent):
-                what = ("rcl merges both mappings, but other YAML readers (PyYAML: launch_ros for "
-                        "composable nodes, yaml.safe_load in scripts) keep only the second")
+            merged = isinstance(ev, yaml.MappingStartEvent)
+            if merged:
+                what = ("rcl merges both mappings, but launch_ros loads this file for a composable "
+                        "node with PyYAML, which keeps only the second")
             else:
                 what = "rcl keeps the first position and overwrites its value"
-            self.model.diagnostics.append(Diagnostic(
+            (self.model.merged_keys if merged else self.model.diagnostics).append(Diagnostic(
                 "X006", dup_span, f"duplicate key \"{key}\" (first at line {first.line}); {what}",
                 "remove one of them, or merge their contents under one key", key=key))
         if self.stack and self.stack[-1][0] == "map":

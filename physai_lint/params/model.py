@@ -75,6 +75,9 @@ class ParamFileModel:
     ok: bool = True  # rcl would parse it (no X001/P104/P106 error)
     has_ros_parameters: bool = False
     distro: str = "humble"
+    # X006 for a key repeated with a mapping as value: rcl merges the two mappings, PyYAML keeps
+    # the second; reported only for files a PyYAML reader loads (engine._load_params)
+    merged_keys: list[Diagnostic] = field(default_factory=list)
     # (ops, ops cut per node key): params.effective's memo, made again when ``ops`` is replaced
     op_segments: Any = field(default=None, repr=False, compare=False)
 

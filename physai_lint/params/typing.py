@@ -215,7 +215,7 @@ _Loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
 MAX_PYYAML_TEXT = 65536
 
 
-def _has_alias(text: str) -> bool:
+def has_alias(text: str) -> bool:
     try:
         for ev in yaml.parse(text, Loader=_Loader):
             if isinstance(ev, yaml.AliasEvent):
@@ -232,7 +232,7 @@ def pyyaml_type(text: str) -> Any:
         return text
     if text == "":
         return ""
-    if len(text) > MAX_PYYAML_TEXT or (("*" in text) and _has_alias(text)):
+    if len(text) > MAX_PYYAML_TEXT or (("*" in text) and has_alias(text)):
         return text
     try:
         return yaml.load(text, Loader=_Loader)

@@ -810,6 +810,7 @@ def _param_model(vf: VirtualFile, distro: str) -> ParamFileModel | None:
     model.ops = ops
     model.blocks = blocks
     model.diagnostics = _remap(model.diagnostics, span, memo)
+    model.merged_keys = _remap(model.merged_keys, span, memo)
     model.path = vf.source or vf.path
     return model
 
@@ -851,7 +852,7 @@ def _model_shapes_known() -> bool:
             and names(NodeBlock) == ("key", "key_span", "params", "nested", "params_key_span",
                                      "params_key_exact")
             and names(ParamFileModel) == ("path", "blocks", "diagnostics", "ops", "ok",
-                                          "has_ros_parameters", "distro", "op_segments"))
+                                          "has_ros_parameters", "distro", "merged_keys", "op_segments"))
     return _SHAPES[0]
 
 

@@ -34,8 +34,13 @@ def _short_yaml_type(text: str) -> ParamValue:
 
 
 def _yaml_type(text: str) -> ParamValue:
-    if len(text) > MAX_YAML_TEXT or "&" in text or "*" in text and "[" in text:
+    if len(text) > MAX_YAML_TEXT:
         return text if "\n" not in text else None
+    if "*" in text:
+        from physai_lint.params.typing import has_alias
+
+        if has_alias(text):  # "['.*']" is a list; an alias (perhaps a bomb) is not worked out
+            return None
     import yaml
 
     loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)

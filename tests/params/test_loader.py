@@ -97,3 +97,8 @@ def test_launch_value():
     p = m.blocks[0].params
     assert p[0].value == 1000.0 and p[0].launch_value == "1e3"
     assert p[1].value is True and p[1].launch_value == "y"
+
+
+def test_a_repeated_node_key_is_kept_apart_rcl_merges_it():
+    m = load("/**:\n  ros__parameters:\n    a: 1\n/**:\n  ros__parameters:\n    b: 2\n")
+    assert codes(m) == [] and [(d.code, d.span.line) for d in m.merged_keys] == [("X006", 4)]

@@ -328,13 +328,13 @@ def run_check(opts: CheckOptions, cwd: str | None = None) -> Report:
 
 def _suppress(findings: list[Finding], project: Project, catalog: dict[str, Any], selector: Any,
               suppress: Any) -> tuple[list[Finding], list[Diagnostic]]:
-    from physai_lint.files import launch_format
+    from physai_lint.sniff import launch_format
 
     directives = {}
     for path, text in project.store.texts.items():
         if text is None or path not in project.targets:
             continue
-        fmt = launch_format(path)
+        fmt = launch_format(path, text)
         if fmt is not None:
             directives[path] = suppress.parse_directives(path, text, fmt)
     return suppress.apply(findings, directives, catalog, enabled=selector.enabled)  # type: ignore[no-any-return]

@@ -45,31 +45,42 @@ class FileStore:
     def text(self, path: str) -> str | None:
         if path in self.texts:
             return self.texts[path]
-        self.texts[path] = text = self._read(path)
+        self.texts[path] = text = self._read(path, self._fail)
         return text
 
-    def _read(self, path: str) -> str | None:
+    def peek(self, path: str) -> str | None:
+        """The text of a file that may not be checked at all: read and kept like ``text``, but a
+        file that cannot be read is neither reported nor remembered (``text`` reports it if the
+        file is checked after all, an include of it say)."""
+        if path in self.texts:
+            return self.texts[path]
+        text = self._read(path, lambda *_: None)
+        if text is not None:
+            self.texts[path] = text
+        return text
+
+    def _read(self, path: str, fail: Callable[[str, Span, str], None]) -> str | None:
         span = Span.whole_file(path)
         try:
             size = os.path.getsize(path)
             if size > self.max_bytes:
-                self._fail(path, span, f"file is {_size(size)}, larger than the {_size(self.max_bytes)} limit")
+                fail(path, span, f"file is {_size(size)}, larger than the {_size(self.max_bytes)} limit")
                 return None
             with open(path, "rb") as fh:
                 data = fh.read(self.max_bytes + 1)
         except OSError as exc:
-            self._fail(path, span, f"cannot read file: {exc.strerror or exc}")
+            fail(path, span, f"cannot read file: {exc.strerror or exc}")
             return None
         if b"\0" in data[:8192] or b"\0" in data:
-            self._fail(path, span, "file is binary (contains NUL bytes)")
+            fail(path, span, "file is binary (contains NUL bytes)")
             return None
         try:
             text = data.decode("utf-8")
         except UnicodeDecodeError as exc:
             line = data[: exc.start].count(b"\n") + 1
             col = exc.start - (data.rfind(b"\n", 0, exc.start) + 1) + 1
-            self._fail(path, Span.point(path, line, col),
-                       f"file is not valid UTF-8: byte 0x{data[exc.start]:02x} at line {line}, column {col}")
+            fail(path, Span.point(path, line, col),
+                 f"file is not valid UTF-8: byte 0x{data[exc.start]:02x} at line {line}, column {col}")
             return None
         return text.removeprefix("\ufeff")
 

@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import json
 import os
+import subprocess
+import sys
 from collections.abc import Callable
 from pathlib import Path
 
@@ -13,6 +15,7 @@ import pytest
 from physai_lint import files as files_module
 from physai_lint.engine import CheckOptions, Report, run_check
 
+REPO = Path(__file__).resolve().parents[2]
 PACKAGE_XML = """<package format="3"><name>demo</name><version>0.0.0</version><description>d</description>
 <maintainer email="m@example.com">a</maintainer><license>MIT</license>
 <exec_depend>demo_nodes_cpp</exec_depend><export><build_type>ament_cmake</build_type></export></package>
@@ -213,3 +216,27 @@ def test_each_file_is_read_and_parsed_once(demo, monkeypatch):
     assert sorted(reads) == sorted(set(reads)) and "src/demo/launch/urg.launch" in reads
     assert sorted(parses) == ["src/demo/launch/relay.launch", "src/demo/launch/robot.launch.xml",
                               "src/demo/launch/y.launch"]
+
+
+def _cli(args: list[str], cwd: Path) -> subprocess.CompletedProcess[str]:
+    env = {**os.environ, "PYTHONPATH": str(REPO), "PHYSAI_LINT_CACHE_DIR": str(cwd / ".cache")}
+    return subprocess.run([sys.executable, "-m", "physai_lint", *args], cwd=cwd, env=env, check=False,
+                          capture_output=True, text=True, timeout=120)
+
+
+def test_cli_says_which_named_files_it_skipped(demo):
+    ws = demo({"launch/urg.launch": ROS1_XML, "launch/relay.launch": ROS2_XML})
+    proc = _cli(["src/demo/launch/urg.launch", "--no-cache"], ws)
+    assert proc.returncode == 0 and proc.stdout.strip() == "All checks passed! (0 files)"
+    assert proc.stderr == ('physai-lint: warning: skipped "src/demo/launch/urg.launch": a ROS 1 (roslaunch) '
+                           "launch file (<node type=...> on line 3), which ros2 launch cannot load\n")
+    graph = _cli(["graph", "src/demo/launch/urg.launch"], ws)
+    assert graph.returncode == 2 and graph.stderr.startswith(
+        'error: "src/demo/launch/urg.launch" is not a launch file: a ROS 1 (roslaunch) launch file')
+
+
+def test_cli_warns_when_a_directory_holds_nothing_to_check(demo):
+    ws = demo({"launch/urg.launch": ROS1_XML, "test/configs/config_launch.yaml": "a: 1\n"})
+    proc = _cli(["src", "--no-cache"], ws)
+    assert proc.returncode == 0 and proc.stdout.strip() == "All checks passed! (0 files)"
+    assert proc.stderr == 'physai-lint: warning: no launch or parameter file found in "src"\n'

@@ -26,7 +26,17 @@ def _project(opts: CheckOptions, entry: str) -> tuple[Project, LaunchResult]:
     for launch in project.launches:
         if launch.entry == entry_abs:
             return project, launch
-    raise UsageError(f'"{entry}" is not a launch file (names end in launch.py, launch.xml or launch.yaml)')
+    raise UsageError(not_a_launch_file(project, entry))
+
+
+def not_a_launch_file(project: Project, entry: str) -> str:
+    """Why ``entry``, named on the command line, has no launch to show."""
+    from physai_lint.report import rel
+
+    target = os.path.normpath(os.path.join(project.cwd, entry)).replace(os.sep, "/")
+    reason = next((why for path, why in project.skipped if path == target),
+                  "a parameter file" if target in project.param_files else "")
+    return f'"{rel(target, project.cwd)}" is not a launch file' + (f": {reason}" if reason else "")
 
 
 def _rel(path: str | None, cwd: str) -> str | None:

@@ -21,7 +21,9 @@ def compute_plan(opts: CheckOptions, entry: str, cwd: str | None = None) -> tupl
     launch = next((l for l in project.launches if l.entry == target), None)
     if launch is None:
         if not project.launches:
-            raise UsageError(f'"{entry}" is not a launch file')
+            from physai_lint.api import not_a_launch_file
+
+            raise UsageError(not_a_launch_file(project, entry))
         launch = project.launches[0]
     graph = build_graph(launch, project.interfaces)
     cache: dict[int, Any] = {}

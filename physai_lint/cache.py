@@ -52,7 +52,7 @@ _GENERATION = re.compile(r"v\d+-[0-9a-f]{16}")
 _SHARD = re.compile(r"[0-9a-f]{2}")
 _ENTRY = re.compile(r"[0-9a-f]{62}\.pickle")
 # Modules whose code decides what a cached value looks like (relative to the package).
-_PRODUCERS = ("files.py", "cache.py", "frontends", "params", "model", "interfaces", "workspace")
+_PRODUCERS = ("files.py", "sniff.py", "cache.py", "frontends", "params", "model", "interfaces", "workspace")
 # Third-party packages whose code does (found without importing them: a warm run never does).
 _THIRD_PARTY = ("catkin_pkg",)
 

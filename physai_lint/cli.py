@@ -325,6 +325,7 @@ def _check(
     from physai_lint.report import at_least, render
 
     report = _post_process(run_check(opts), extras)
+    _warn_unchecked(report, paths)
     fail_on = opts.fail_on
     text = render(
         fmt,
@@ -344,6 +345,20 @@ def _check(
         sys.stderr.write(f"physai-lint: wrote {n} finding{'' if n == 1 else 's'} to the baseline {common.write_baseline}\n")
         return 0
     return 0 if exit_zero or not at_least(report.findings, fail_on) else 1
+
+
+def _warn_unchecked(report: Any, paths: List[str]) -> None:
+    """Say on stderr what was not checked, so that "All checks passed! (0 files)" is never all a user
+    sees: each named file left out (a ROS 1 launch file), or, like ruff's "No Python files found",
+    directories holding nothing to check. Findings and the exit code are not affected."""
+    from physai_lint.report import rel
+
+    skipped = getattr(report, "skipped", [])
+    for path, reason in skipped:
+        sys.stderr.write(f'physai-lint: warning: skipped "{rel(path, report.cwd)}": {reason}\n')
+    if not skipped and not report.files and not report.findings and all(os.path.isdir(p) for p in paths):
+        where = ", ".join(f'"{p}"' for p in paths)
+        sys.stderr.write(f"physai-lint: warning: no launch or parameter file found in {where}\n")
 
 
 def _api_command(kind: str, args: Optional[List[str]], common: _Common, fmt: str, output: Optional[str], node: Optional[str] = None) -> int:

@@ -44,6 +44,7 @@ class Report:
     cwd: str
     duration_s: float = 0.0
     baseline_suppressed: int = 0
+    skipped: list[tuple[str, str]] = field(default_factory=list)  # named files not checked, and why
 
 
 @dataclass
@@ -60,6 +61,7 @@ class Project:
     interfaces: Any
     targets: frozenset[str]
     diagnostics: list[Diagnostic]
+    skipped: list[tuple[str, str]] = field(default_factory=list)  # named files not checked, and why
 
 
 def _abs(path: str, cwd: str) -> str:
@@ -84,20 +86,21 @@ def build_project(opts: CheckOptions, cwd: str | None = None, progress: Any = No
         raise UsageError(exc.message) from None
     if opts.workspace and not os.path.isdir(root):
         raise UsageError(f'workspace "{opts.workspace}" is not a directory')
-    # Without a launch file to resolve, the index is read only for the problems of the checked
-    # packages' manifests (nothing resolves, so no rule asks it anything): build only that.
-    scope = None if found.launch_files else sorted(set(paths) | set(found.param_files))
     from physai_lint.cache import ParseCache
 
     cache = ParseCache.open(opts.cache)  # parse results, package reading, C++ extraction
+    max_bytes = int(opts.rule_options.get("X002", {}).get("max-bytes", MAX_FILE_BYTES))
+    store = FileStore(cache=cache, max_bytes=max_bytes)
+    skipped = _sort_out(store, found)
+    # Without a launch file to resolve, the index is read only for the problems of the checked
+    # packages' manifests (nothing resolves, so no rule asks it anything): build only that.
+    scope = None if found.launch_files else sorted(set(paths) | set(found.param_files))
     packages = ws.build_package_index(root, opts.distro, os.environ.get("AMENT_PREFIX_PATH"), scope,
                                       cache=cache)
     from physai_lint.parallel import default_jobs, interface_side, package_reads, resolve_entries
     from physai_lint.progress import Progress
 
     progress = progress or Progress(False)
-    max_bytes = int(opts.rule_options.get("X002", {}).get("max-bytes", MAX_FILE_BYTES))
-    store = FileStore(cache=cache, max_bytes=max_bytes)
     jobs = opts.jobs or default_jobs()
     # The packages holding checked files are read at the end anyway; with --jobs, on every CPU
     # first, along with the parsing when that forks (parallel.package_reads).
@@ -141,7 +144,7 @@ def build_project(opts: CheckOptions, cwd: str | None = None, progress: Any = No
     progress.stage("resolving", len(launch_files))
     launches = choose_roots(launch_files, loader, resolve, progress.advance, resolve_many,
                             getattr(packages, "package_name_of", None))
-    targets = set(paths) | set(found.launch_files) | set(found.param_files)
+    targets = (set(paths) - {p for p, _ in skipped}) | set(found.launch_files) | set(found.param_files)
     for r in launches:
         if r.entry in explicit or any(r.entry.startswith(p.rstrip("/") + "/") for p in paths) or \
                 any(f in explicit for f in r.files):
@@ -160,7 +163,32 @@ def build_project(opts: CheckOptions, cwd: str | None = None, progress: Any = No
     for r in launches:
         diagnostics.extend(r.diagnostics)
     return Project(cwd, root, store, packages, launches, [r.entry for r in launches], param_models,
-                   interfaces, frozenset(targets), diagnostics)
+                   interfaces, frozenset(targets), diagnostics, skipped)
+
+
+def _sort_out(store: FileStore, found: Any) -> list[tuple[str, str]]:
+    """Decide, from their texts, what discovery's undecided files are (``sniff.classify``): add
+    them to its launch or parameter files, or leave them out. Returns the explicitly named files
+    left out, with the reason. The texts stay in the store: each file is still read once."""
+    from physai_lint.sniff import classify
+    from physai_lint.workspace import is_launch_file
+
+    explicit = set(found.explicit)
+    launch, params, skipped = set(found.launch_files), set(found.param_files), []
+    for path in found.undecided:
+        name = os.path.basename(path)
+        # An unreadable file is reported (X002) when its name or the user says it is a launch file;
+        # else it is most likely no launch file at all (a binary *.launch of a ROS 1 package).
+        named = path in explicit or is_launch_file(name)
+        verdict = classify(name, store.text(path) if named else store.peek(path), path in explicit)
+        if verdict.kind == "launch":
+            launch.add(path)
+        elif verdict.kind == "params":
+            params.add(path)
+        elif path in explicit:
+            skipped.append((path, verdict.reason or "not a launch or parameter file"))
+    found.launch_files, found.param_files = sorted(launch), sorted(params)
+    return skipped
 
 
 def _param_sources(r: Any) -> set[str]:
@@ -333,18 +361,18 @@ def run_check(opts: CheckOptions, cwd: str | None = None) -> Report:
     if opts.write_baseline:
         bl.write(opts.write_baseline, findings, project.cwd)
     files = sorted(project.targets & (set(project.store.texts) | set(project.param_files)))
-    return Report(findings, files, project.cwd, time.perf_counter() - started, suppressed)
+    return Report(findings, files, project.cwd, time.perf_counter() - started, suppressed, project.skipped)
 
 
 def _suppress(findings: list[Finding], project: Project, catalog: dict[str, Any], selector: Any,
               suppress: Any) -> tuple[list[Finding], list[Diagnostic]]:
-    from physai_lint.files import launch_format
+    from physai_lint.sniff import launch_format
 
     directives = {}
     for path, text in project.store.texts.items():
         if text is None or path not in project.targets:
             continue
-        fmt = launch_format(path)
+        fmt = launch_format(path, text)
         if fmt is not None:
             directives[path] = suppress.parse_directives(path, text, fmt)
     return suppress.apply(findings, directives, catalog, enabled=selector.enabled)  # type: ignore[no-any-return]

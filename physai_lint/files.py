@@ -16,6 +16,7 @@ from typing import Any
 from physai_lint.model.findings import Diagnostic
 from physai_lint.model.launch import LaunchFile
 from physai_lint.model.span import Span
+from physai_lint.sniff import is_fallback_python, launch_format
 
 MAX_FILE_BYTES = 64 * 1024 * 1024
 
@@ -25,18 +26,6 @@ def _size(n: int) -> str:
     if n % mib == 0:
         return f"{n // mib} MiB"
     return f"{n / mib:.1f} MiB" if n >= mib else f"{n:,} bytes"
-
-
-def launch_format(path: str) -> str | None:
-    """The frontend for a path by extension (``AnyLaunchDescriptionSource`` picks by extension)."""
-    low = path.lower()
-    if low.endswith(".py"):
-        return "python"
-    if low.endswith(".xml"):
-        return "xml"
-    if low.endswith((".yaml", ".yml")):
-        return "yaml"
-    return None
 
 
 @dataclass
@@ -56,31 +45,42 @@ class FileStore:
     def text(self, path: str) -> str | None:
         if path in self.texts:
             return self.texts[path]
-        self.texts[path] = text = self._read(path)
+        self.texts[path] = text = self._read(path, self._fail)
         return text
 
-    def _read(self, path: str) -> str | None:
+    def peek(self, path: str) -> str | None:
+        """The text of a file that may not be checked at all: read and kept like ``text``, but a
+        file that cannot be read is neither reported nor remembered (``text`` reports it if the
+        file is checked after all, an include of it say)."""
+        if path in self.texts:
+            return self.texts[path]
+        text = self._read(path, lambda *_: None)
+        if text is not None:
+            self.texts[path] = text
+        return text
+
+    def _read(self, path: str, fail: Callable[[str, Span, str], None]) -> str | None:
         span = Span.whole_file(path)
         try:
             size = os.path.getsize(path)
             if size > self.max_bytes:
-                self._fail(path, span, f"file is {_size(size)}, larger than the {_size(self.max_bytes)} limit")
+                fail(path, span, f"file is {_size(size)}, larger than the {_size(self.max_bytes)} limit")
                 return None
             with open(path, "rb") as fh:
                 data = fh.read(self.max_bytes + 1)
         except OSError as exc:
-            self._fail(path, span, f"cannot read file: {exc.strerror or exc}")
+            fail(path, span, f"cannot read file: {exc.strerror or exc}")
             return None
         if b"\0" in data[:8192] or b"\0" in data:
-            self._fail(path, span, "file is binary (contains NUL bytes)")
+            fail(path, span, "file is binary (contains NUL bytes)")
             return None
         try:
             text = data.decode("utf-8")
         except UnicodeDecodeError as exc:
             line = data[: exc.start].count(b"\n") + 1
             col = exc.start - (data.rfind(b"\n", 0, exc.start) + 1) + 1
-            self._fail(path, Span.point(path, line, col),
-                       f"file is not valid UTF-8: byte 0x{data[exc.start]:02x} at line {line}, column {col}")
+            fail(path, Span.point(path, line, col),
+                 f"file is not valid UTF-8: byte 0x{data[exc.start]:02x} at line {line}, column {col}")
             return None
         return text.removeprefix("\ufeff")
 
@@ -96,7 +96,7 @@ class FileStore:
         self.launches[path] = None  # guards against re-entry while parsing
         text = self.text(path)
         result = None
-        if text is not None and launch_format(path) is not None:
+        if text is not None:  # any file: ros2 launch loads what an include names, whatever its name
             job = Job("launch", path, text, self.distro)
             value = self._cached(job)
             if value is None:
@@ -129,8 +129,7 @@ class FileStore:
         from physai_lint import parallel
 
         self.distro = distro
-        todo = [Job("launch", p, "", distro) for p in sorted(set(launches)) if p not in self.launches
-                and launch_format(p) is not None]
+        todo = [Job("launch", p, "", distro) for p in sorted(set(launches)) if p not in self.launches]
         todo += [Job("params", p, "", distro) for p in sorted(set(params)) if p not in self.params]
         misses: list[Job] = []
         for job in todo:
@@ -204,7 +203,7 @@ def import_parsers(jobs: Iterable[Job]) -> None:
     frontends and the parameter loader: ~0.1 s of CPU per helper)."""
     from importlib import import_module
 
-    kinds = {"params" if job.kind == "params" else launch_format(job.path) for job in jobs}
+    kinds = {"params" if job.kind == "params" else launch_format(job.path, job.text) for job in jobs}
     for kind, module in (("params", "physai_lint.params.loader"), ("python", "physai_lint.frontends.python"),
                          ("xml", "physai_lint.frontends.xml_launch"), ("yaml", "physai_lint.frontends.yaml_launch")):
         if kind in kinds:
@@ -254,8 +253,10 @@ MAX_LAUNCH_CHARS = 2_000_000
 
 def parse_launch_text(path: str, text: str, reader: Callable[[str], str | None],
                       sink: list[Diagnostic], distro: str = "") -> LaunchFile | None:
-    fmt = launch_format(path)
-    if fmt is not None and len(text) > MAX_LAUNCH_CHARS:
+    """Parse a launch file with the frontend ``ros2 launch`` would load it with (by extension, else
+    by its text: ``sniff.launch_format``); its diagnostics go to ``sink``."""
+    fmt = launch_format(path, text)
+    if len(text) > MAX_LAUNCH_CHARS:
         sink.append(Diagnostic(
             "X002", Span.whole_file(path),
             f"file is {len(text) // 1_000_000} MB, larger than the {MAX_LAUNCH_CHARS // 1_000_000} MB "
@@ -271,12 +272,10 @@ def parse_launch_text(path: str, text: str, reader: Callable[[str], str | None],
             from physai_lint.frontends.xml_launch import parse_xml_launch
 
             res = parse_xml_launch(path, text)
-        elif fmt == "yaml":
+        else:
             from physai_lint.frontends.yaml_launch import parse_yaml_launch
 
             res = parse_yaml_launch(path, text)
-        else:
-            return None
     except RecursionError:
         sink.append(Diagnostic("X001", Span.whole_file(path),
                                "file is nested too deeply to analyse",
@@ -285,8 +284,22 @@ def parse_launch_text(path: str, text: str, reader: Callable[[str], str | None],
     except Exception as exc:  # a crash is a bug and a finding, never a traceback
         sink.append(internal_error(path, f"{fmt} frontend", exc))
         return None
-    sink.extend(res.diagnostics)
+    if fmt == "python" and res.launch is None and is_fallback_python(path, text):
+        sink.extend(_no_loader(path, d) if d.code == "X001" else d for d in res.diagnostics)
+    else:
+        sink.extend(res.diagnostics)
     return res.launch
+
+
+def _no_loader(path: str, d: Diagnostic) -> Diagnostic:
+    """A file of no launch extension that no loader takes: say so, as launch's
+    ``InvalidLaunchFileError`` does, rather than only that it is not valid Python."""
+    from dataclasses import replace
+
+    return replace(d, message=f'no launch frontend can load "{os.path.basename(path)}": it is neither '
+                              f'XML, nor YAML with a "launch" key, nor Python ({d.message})',
+                   help="ros2 launch fails to load it (InvalidLaunchFileError); name launch files "
+                        "*.launch.py, *.launch.xml or *.launch.yaml")
 
 
 def internal_error(path: str, where: str, exc: BaseException) -> Diagnostic:

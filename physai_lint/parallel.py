@@ -120,11 +120,11 @@ _TRAVEL_ORDER = {"params": 0, "xml": 1, "yaml": 1, "python": 2}
 
 
 def _travel_rank(job: Any) -> int:
-    from physai_lint.files import launch_format
+    from physai_lint.sniff import launch_format
 
     kind = getattr(job, "kind", None)
     if kind != "params":
-        kind = launch_format(getattr(job, "path", "") or "")
+        kind = launch_format(getattr(job, "path", "") or "", getattr(job, "text", None))
     return _TRAVEL_ORDER.get(kind or "", 1)
 
 

@@ -6,6 +6,8 @@ import os
 import stat
 from dataclasses import dataclass, field
 
+from physai_lint.sniff import LAUNCH_SUFFIXES, YAML_SUFFIXES
+
 from ._glob import compile_glob
 
 try:
@@ -15,8 +17,6 @@ except ImportError:  # pragma: no cover - the workspace layer also works on its 
 
 IGNORE_MARKERS = ("COLCON_IGNORE", "AMENT_IGNORE", "CATKIN_IGNORE")
 SKIP_DIRS = frozenset({"build", "install", "log", "__pycache__"})
-LAUNCH_SUFFIXES = ("launch.py", "launch.xml", "launch.yaml")
-YAML_SUFFIXES = (".yaml", ".yml")
 PARAM_SNIFF_LIMIT = 10 * 1024 * 1024
 
 
@@ -32,12 +32,17 @@ class UsageError(_BaseUsageError):
 @dataclass
 class Discovery:
     """Absolute, ``/``-separated, sorted paths. ``explicit`` are the files named on the command line
-    (kept even when an ignore rule would hide them)."""
+    (kept even when an ignore rule would hide them). ``undecided`` are the files whose text decides
+    whether they are checked, and as what (``physai_lint.sniff.classify``, once the file store has
+    read them): explicit files other than Python files and package.xml, and, found in a directory,
+    ``*launch.xml`` (ROS 1 or 2), ``*launch.yaml``/``*launch.yml`` (launch file or test data) and
+    ``*.launch`` (mostly ROS 1) files."""
 
     launch_files: list[str] = field(default_factory=list)
     param_files: list[str] = field(default_factory=list)
     package_xmls: list[str] = field(default_factory=list)
     explicit: list[str] = field(default_factory=list)
+    undecided: list[str] = field(default_factory=list)
 
 
 def dir_identity(path: str) -> tuple[int, int] | None:
@@ -52,14 +57,15 @@ def dir_identity(path: str) -> tuple[int, int] | None:
 
 
 def is_launch_file(name: str) -> bool:
-    """ros2launch ``is_launch_file``: ``x.launch.py`` and ``x_launch.py`` both count."""
+    """Named like a launch file (ros2launch ``is_launch_file``): ``x.launch.py`` and ``x_launch.py``
+    both count, and so do ``launch.xml``, ``launch.yaml`` and ``launch.yml``."""
     return name.endswith(LAUNCH_SUFFIXES)
 
 
 def _wanted(name: str) -> bool:
-    """A file discovery looks at: a launch file, a YAML file (a parameter file when it says so),
-    or a package.xml."""
-    return is_launch_file(name) or name.endswith(YAML_SUFFIXES) or name == "package.xml"
+    """A file discovery looks at: a launch file, a ``*.launch`` file (ROS 2 or ROS 1 XML), a YAML
+    file (a parameter file when it says so), or a package.xml."""
+    return is_launch_file(name) or name.endswith((".launch", *YAML_SUFFIXES)) or name == "package.xml"
 
 
 def _norm(path: str) -> str:
@@ -208,17 +214,19 @@ def discover(paths: list[str], respect_gitignore: bool = True) -> Discovery:
     params: set[str] = set()
     manifests: set[str] = set()
     explicit: set[str] = set()
+    undecided: set[str] = set()
     gi = GitIgnore() if respect_gitignore else None
     seen_real: set[tuple[int, int]] = set()
 
     def classify(path: str, name: str, forced: bool) -> None:
-        if is_launch_file(name):
-            launch.add(path)
-        elif name.endswith(YAML_SUFFIXES):
-            if forced or sniff_param_file(path):
-                params.add(path)
-        elif name == "package.xml":
+        if name == "package.xml":
             manifests.add(path)
+        elif name.endswith("launch.py") or (forced and name.endswith(".py")):
+            launch.add(path)
+        elif forced or is_launch_file(name) or name.endswith(".launch"):
+            undecided.add(path)  # read by the file store, which parses it then if it is taken
+        elif name.endswith(YAML_SUFFIXES) and sniff_param_file(path):
+            params.add(path)
 
     def walk(dirpath: str) -> None:
         real = dir_identity(dirpath)
@@ -274,13 +282,12 @@ def discover(paths: list[str], respect_gitignore: bool = True) -> Discovery:
             walk(path)
         else:
             explicit.add(path)
-            name = os.path.basename(path)
-            if _wanted(name):
-                classify(path, name, True)
+            classify(path, os.path.basename(path), True)
     result.launch_files = sorted(launch)
     result.param_files = sorted(params)
     result.package_xmls = sorted(manifests)
     result.explicit = sorted(explicit)
+    result.undecided = sorted(undecided - launch - params)
     return result
 
 

@@ -146,7 +146,9 @@ def classify(name: str, text: str | None, explicit: bool) -> Verdict:
 
     ``explicit`` files were named on the command line: they are checked the way ``ros2 launch``
     would load them (a YAML file as a parameter file unless it is a launch file), except ROS 1
-    launch files, whose every line would be a wrong finding. Found in a directory, a file named
+    launch files, whose every line would be a wrong finding, and Python (or any other text) that
+    defines no ``generate_launch_description`` and is not named ``*launch.py`` (``setup.py``, a
+    README: what ``git diff --name-only | xargs physai-lint`` hands over). Found in a directory, a file named
     ``*launch.xml`` is taken unless it is ROS 1, a ``*.launch`` file only when it is clearly ROS 2,
     and a ``*launch.yaml`` only with a top-level ``launch`` key (else as a parameter file when it
     holds ``ros__parameters``, like any YAML file)."""
@@ -167,6 +169,9 @@ def classify(name: str, text: str | None, explicit: bool) -> Verdict:
             return Verdict(None, f"a ROS 1 (roslaunch) launch file ({marker} on line {line}), "
                                  "which ros2 launch cannot load")
         return Verdict("launch" if explicit or named or (gen.ros2 and xml_root(text) == "launch") else None)
-    if explicit or named or fmt == "yaml":
+    if named or fmt == "yaml" or "def generate_launch_description" in text or (explicit and name.endswith(".launch")):
         return Verdict("launch")
-    return Verdict("launch" if "def generate_launch_description" in text else None)
+    if explicit:  # setup.py or a README among the changed files a script hands over
+        return Verdict(None, "not a launch file: no launch frontend takes it, and as Python it defines "
+                             "no generate_launch_description")
+    return Verdict(None)

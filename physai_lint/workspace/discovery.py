@@ -34,7 +34,7 @@ class Discovery:
     """Absolute, ``/``-separated, sorted paths. ``explicit`` are the files named on the command line
     (kept even when an ignore rule would hide them). ``undecided`` are the files whose text decides
     whether they are checked, and as what (``physai_lint.sniff.classify``, once the file store has
-    read them): explicit files other than Python files and package.xml, and, found in a directory,
+    read them): explicit files other than ``*launch.py`` and package.xml, and, found in a directory,
     ``*launch.xml`` (ROS 1 or 2), ``*launch.yaml``/``*launch.yml`` (launch file or test data) and
     ``*.launch`` (mostly ROS 1) files."""
 
@@ -221,7 +221,7 @@ def discover(paths: list[str], respect_gitignore: bool = True) -> Discovery:
     def classify(path: str, name: str, forced: bool) -> None:
         if name == "package.xml":
             manifests.add(path)
-        elif name.endswith("launch.py") or (forced and name.endswith(".py")):
+        elif name.endswith("launch.py"):
             launch.add(path)
         elif forced or is_launch_file(name) or name.endswith(".launch"):
             undecided.add(path)  # read by the file store, which parses it then if it is taken

@@ -145,12 +145,25 @@ def test_explicit_file_of_no_launch_extension_is_loaded_by_its_text(demo, name, 
     assert checked(report, ws) == [f"src/demo/{name}"]
 
 
-def test_explicit_file_no_loader_takes_is_one_clear_finding(demo):
-    ws = demo({"README.md": "# Demo\n\nRun `ros2 launch demo relay.launch`.\n"})
-    report = check(ws, "src/demo/README.md")
-    assert [(f.code, f.span.line) for f in report.findings] == [("X001", 3)]
-    assert report.findings[0].message.startswith(
-        'no launch frontend can load "README.md": it is neither XML, nor YAML with a "launch" key, nor Python (')
+def test_explicit_file_that_is_no_launch_file_is_skipped_with_its_reason(demo):
+    # what `git diff --name-only | xargs physai-lint` hands over besides launch files
+    ws = demo({"README.md": "# Demo\n\nRun `ros2 launch demo relay.launch`.\n",
+               "setup.py": "from setuptools import setup\nsetup(name='demo')\n"})
+    for name in ("README.md", "setup.py"):
+        report = check(ws, f"src/demo/{name}")
+        assert report.findings == [] and checked(report, ws) == []
+        assert [reason for _, reason in report.skipped] == [
+            "not a launch file: no launch frontend takes it, and as Python it defines no generate_launch_description"]
+
+
+def test_an_included_file_no_loader_takes_is_one_clear_finding(demo):
+    ws = demo({"launch/notes.txt": "# Demo\n\nRun `ros2 launch demo relay.launch`.\n",
+               "launch/a.launch.xml": '<launch>\n  <include file="$(find-pkg-share demo)/launch/notes.txt"/>\n</launch>\n'})
+    report = check(ws, "src/demo/launch/a.launch.xml")
+    x001 = [f for f in report.findings if f.code == "X001"]
+    assert [f.span.line for f in x001] == [3]
+    assert x001[0].message.startswith(
+        'no launch frontend can load "notes.txt": it is neither XML, nor YAML with a "launch" key, nor Python (')
 
 
 @pytest.mark.parametrize("data, code", [

@@ -63,6 +63,8 @@ ROS1 = '<launch>\n  <node pkg="p" type="e"/>\n</launch>\n'
 NEITHER = '<launch>\n  <arg name="a" default="1"/>\n</launch>\n'
 YAML_LAUNCH = "launch:\n- node: {pkg: p, exec: e}\n"
 PY_LAUNCH = "def generate_launch_description():\n    pass\n"
+NOT_LAUNCH_REASON = ("not a launch file: no launch frontend takes it, and as Python it defines no "
+                     "generate_launch_description")
 ROS1_REASON = "a ROS 1 (roslaunch) launch file (<node type=...> on line 2), which ros2 launch cannot load"
 
 
@@ -87,7 +89,8 @@ ROS1_REASON = "a ROS 1 (roslaunch) launch file (<node type=...> on line 2), whic
     ("a.launch", ROS1, True, None),
     ("a.launch.xml", ROS1, True, None),
     ("a.launch", "# Notes\n", True, "launch"),  # loaded as Python, last, like launch does
-    ("README.md", "# Notes\n", True, "launch"),
+    ("README.md", "# Notes\n", True, None),  # not a launch file: skipped, with the reason
+    ("setup.py", "from setuptools import setup\n", True, None),
     ("a.launch", None, True, "launch"),
     ("config_launch.yaml", "cases:\n- a\n", True, "launch"),  # what its name says
     ("a.yaml", YAML_LAUNCH, True, "launch"),
@@ -96,4 +99,5 @@ ROS1_REASON = "a ROS 1 (roslaunch) launch file (<node type=...> on line 2), whic
 def test_classify(name, text, explicit, kind):
     verdict = classify(name, text, explicit)
     assert verdict.kind == kind
-    assert verdict.reason == (ROS1_REASON if text == ROS1 else "")
+    no_launch = explicit and kind is None and text != ROS1
+    assert verdict.reason == (ROS1_REASON if text == ROS1 else NOT_LAUNCH_REASON if no_launch else "")

@@ -1,10 +1,12 @@
 """XML/YAML markup and substitutions: L002 unknown-attribute, L114 substitution-not-in-distro."""
 from __future__ import annotations
 
+import os
+import re
 from collections.abc import Iterator
 from typing import Any
 
-from physai_lint.checks._util import ir_objects
+from physai_lint.checks._util import ir_objects, run_memo
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.frontends.substitutions import DISTRO_ONLY_SUBSTITUTIONS, LAUNCH_LOG_DIR_REASON
 from physai_lint.frontends.tags import unknown_markup
@@ -18,7 +20,7 @@ def unknown_attribute(ctx: CheckContext) -> Iterator[Diagnostic]:
         lf = ctx.launch_files[path]
         if lf.format not in ("xml", "yaml") or lf.markup is None:
             continue
-        for span, message, hint in unknown_markup(lf.markup, lf.format):
+        for span, message, hint in unknown_markup(lf.markup, lf.format, lambda: _extension_tags(ctx)):
             if hint and " " not in hint:
                 help_ = f'did you mean "{hint}"?'
             else:
@@ -29,6 +31,35 @@ def unknown_attribute(ctx: CheckContext) -> Iterator[Diagnostic]:
                 "L002", span,
                 f"{msg}; launch rejects it when it parses the file",
                 help=help_, key=message)
+
+
+_EXPOSE = re.compile(r"""@expose_action\(\s*['"]([\w.-]+)['"]""")
+_ENTRY_POINT = "launch.frontend.launch_extension"
+
+
+def _extension_tags(ctx: CheckContext) -> frozenset[str]:
+    """The tags the workspace's launch extensions register: ``@expose_action('gz_server')`` in a
+    Python package that declares a ``launch.frontend.launch_extension`` entry point (ros_gz_sim,
+    ros_gz_bridge), which launch loads before it parses a file. Read on the first unknown tag."""
+    return run_memo(ctx.options, "_extension_tags", ctx.launches, lambda: _scan_extensions(ctx.packages))
+
+
+def _scan_extensions(packages: Any) -> frozenset[str]:
+    lazy = getattr(packages, "packages", None)
+    reader = getattr(packages, "read_text", None)
+    if lazy is None or reader is None:
+        return frozenset()
+    tags: set[str] = set()
+    for name in sorted(lazy):
+        root = lazy.dir_of(name)
+        if not any(_ENTRY_POINT in (reader(os.path.join(root, f)) or "") for f in ("setup.cfg", "setup.py")):
+            continue
+        for dirpath, dirnames, files in os.walk(root):
+            dirnames[:] = sorted(d for d in dirnames if not d.startswith(".") and d != "test")
+            for f in sorted(files):
+                if f.endswith(".py"):
+                    tags.update(_EXPOSE.findall(reader(os.path.join(dirpath, f)) or ""))
+    return frozenset(tags)
 
 
 # The Python classes of those substitutions (launch.substitutions), by their frontend names.

@@ -6,6 +6,7 @@ real launch rejects unknown attributes, keys and nested tags (``assert_entity_co
 from __future__ import annotations
 
 import difflib
+from collections.abc import Callable
 from dataclasses import dataclass
 
 from physai_lint.model.launch import MarkupFacts
@@ -117,15 +118,24 @@ def suggest(word: str, options: frozenset[str]) -> str | None:
     return close[0] if close else None
 
 
-def unknown_markup(facts: MarkupFacts, fmt: str = "xml") -> list[tuple[Span, str, str | None]]:
+def unknown_markup(facts: MarkupFacts, fmt: str = "xml", extension_tags: Callable[[], frozenset[str]] | None = None
+                   ) -> list[tuple[Span, str, str | None]]:
     """Unknown tags, attributes/keys and misplaced tags: (span, message, suggestion or help).
-    In YAML a key of its parent's given a mapping (``value: {a: 1}``) is wrong-attribute-type's."""
+    In YAML a key of its parent's given a mapping (``value: {a: 1}``) is wrong-attribute-type's.
+    ``extension_tags``: the tags launch extensions of the workspace register (asked for only when
+    a tag is unknown); such a tag and what it holds are theirs to judge."""
     out: list[tuple[Span, str, str | None]] = []
+    extensions: set[str] = set()  # extension tags met: what they hold is theirs to judge
     for tag, parent, attrs, span in facts.elements:
+        if parent is not None and parent in extensions:
+            continue
         if fmt == "yaml" and parent is not None and parent in ACCEPTED_BY_SCHEMA \
                 and tag in ACCEPTED_BY_SCHEMA[parent]:
             continue
         spec = _INCLUDE_ARG if tag == "arg" and parent == "include" else ACCEPTED.get(tag)
+        if spec is None and extension_tags is not None and tag in extension_tags():
+            extensions.add(tag)
+            continue
         if spec is None:
             allowed = ACCEPTED[parent].children if parent in ACCEPTED else ACTION_TAGS
             out.append((span, f'unknown tag "{tag}"', suggest(tag, allowed or ACTION_TAGS)))

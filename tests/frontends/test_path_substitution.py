@@ -50,3 +50,26 @@ def test_find_package_share_find_is_the_named_package_directory(demo_graph):
     nodes = demo_graph(files, "launch/a.launch.py")
     assert nodes["found"]["parameters"] == {"rate": 5.0}
     assert nodes["found"]["parameters_complete"] is True
+
+
+PATHLIB = """
+from pathlib import Path
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+def generate_launch_description():
+    share = get_package_share_directory("demo")
+    return LaunchDescription([
+        Node(package="demo", executable="a", name="chained", parameters=[str(Path(share) / "config" / "p.yaml")]),
+        Node(package="demo", executable="a", name="parts", parameters=[Path(share, "config", "p.yaml")]),
+    ])
+"""
+
+
+def test_pathlib_joins_of_a_package_directory(demo_graph):
+    # ouster-ros: Path(share) / 'launch' / 'driver.launch.py'; the second / joined a plain str
+    files = {"config/p.yaml": "/**:\n  ros__parameters:\n    rate: 5.0\n", "launch/a.launch.py": PATHLIB}
+    nodes = demo_graph(files, "launch/a.launch.py")
+    for name in ("chained", "parts"):
+        assert nodes[name]["parameters"] == {"rate": 5.0}, name

@@ -287,6 +287,9 @@ def call_ref(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any], 
             return KPath(posixpath.join(*[a.path if isinstance(a, KPath) else str(a) for a in args]))
         if len(args) == 1 and isinstance(args[0], SymStr):
             return KPath(args[0])  # type: ignore[arg-type]
+        if args and isinstance(args[0], (SymStr, KPath)) and all(isinstance(a, (str, SymStr, KPath)) for a in args):
+            # Path(get_package_share_directory('p'), 'launch', 'x.py'): a join, like Path(a) / b / c
+            return symbolic.path_join([KPath(args[0]) if isinstance(args[0], SymStr) else args[0], *args[1:]], span)
         return Opaque("Path of a value that cannot be evaluated statically", span)
     if qual in ("yaml.safe_load", "yaml.load", "yaml.full_load", "json.load", "json.loads"):
         return load_data(ev, qual, args[0] if args else kwargs.get("stream"), span)

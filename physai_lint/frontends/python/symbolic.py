@@ -139,7 +139,7 @@ def binop(rec: Recorder, op: ast.operator, left: Any, right: Any, span: Span) ->
             return SymStr(to_value(left, span) + to_value(right, span))
         return None
     if isinstance(op, ast.Div) and isinstance(left, KPath):
-        return path_join([left.path, right], span)
+        return path_join([left, right], span)  # a KPath again: the next / joins on
     if isinstance(op, ast.Mod) and isinstance(left, str):
         args = right if isinstance(right, tuple) else (right,)
         if any(is_textlike(a) and not isinstance(a, str) for a in args):

@@ -45,6 +45,8 @@ def unused_argument(ctx: CheckContext) -> Iterator[Diagnostic]:
     seen: set[object] = set()
     for launch in ctx.launches:
         opaque_files = {s.file for s, _ in launch.opaque}
+        # a file including one that cannot be read (missing: L105) may hand it its arguments
+        opaque_files |= {i.file for i in launch.includes if i.status not in ("ok", "cycle") and i.active is not False}
         read_names = {r.name for r in launch.config_reads}
         # a file of this launch that reads the whole context.launch_configurations reads them all
         reads_all = any(EVERY_CONFIGURATION in _escaped(ctx, f) for f in launch.files)

@@ -148,3 +148,21 @@ def test_configurations_stored_in_objects_not_followed_may_be_read(tmp_path, dem
     # loader), and a condition evaluated by hand (rtabmap's IfCondition(...).evaluate(context)):
     # the object may read what it holds
     assert _findings(tmp_path, demo_package, "a.launch.py", STORED) == [("L102", "unused")]
+
+
+MISSING_INCLUDE = """<launch>
+  <arg name="start_rviz" default="false"/>
+  <arg name="unused" default="x"/>
+  <include file="$(find-pkg-share demo)/launch/INCLUDED"/>
+</launch>
+"""
+
+
+def test_an_include_that_cannot_be_read_may_read_the_arguments(tmp_path, demo_package):
+    # turtlebot3_manipulation: the argument is declared for a file that does not exist (L105);
+    # that file is the likely reader, so "remove the declaration" would be the wrong advice
+    demo_package({"launch/b.launch.xml": "<launch/>\n"})
+    present = _findings(tmp_path, demo_package, "a.launch.xml", MISSING_INCLUDE.replace("INCLUDED", "b.launch.xml"))
+    assert present == [("L102", "start_rviz"), ("L102", "unused")]  # the included file reads neither
+    missing = _findings(tmp_path, demo_package, "a.launch.xml", MISSING_INCLUDE.replace("INCLUDED", "gone.launch.xml"))
+    assert missing == []

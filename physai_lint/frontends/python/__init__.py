@@ -104,8 +104,9 @@ def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | N
                                     "generate_launch_description does not return a LaunchDescription"),)
     try:
         nodes = ast_nodes(tree)
-        calls = tuple(call_facts(nodes, spans, ev.kw_kinds))
-        names = tuple(undefined_names(tree, nodes, spans, text))
+        dead = ev.dead_lines(nodes)
+        calls = tuple(c for c in call_facts(nodes, spans, ev.kw_kinds) if not _within(c.span, dead))
+        names = tuple(n for n in undefined_names(tree, nodes, spans, text) if not _within(n.span, dead))
     except RecursionError:
         calls, names = (), ()
     concats = tuple(sorted(ev.concats.values(), key=lambda c: (c.span.line, c.span.col, c.how)))
@@ -121,3 +122,8 @@ def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | N
     launch = LaunchFile(path, "python", actions, python=facts, read_files=tuple(ev.read_files))
     convert_values.set_recorder(None)
     return FrontendResult(launch=launch, diagnostics=[])
+
+
+def _within(span: Span, ranges: list[tuple[int, int]]) -> bool:
+    """``span`` starts on a line of one of ``ranges`` (code the evaluation never ran)."""
+    return any(a <= span.line <= b for a, b in ranges)

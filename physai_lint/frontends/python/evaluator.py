@@ -58,6 +58,8 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
         # per function being run: its early returns from undecided ``if``s, each with the tags of
         # (the branch that returned, the rest of the function)
         self.pending: list[list[tuple[Any, tuple[CondTag, CondTag]]]] = []
+        # per ``if`` statement run: the outcomes of its test ({True, False} when undecided)
+        self.branches: dict[ast.If, set[bool]] = {}
         self.frame_tags: list[int] = []
         self.modules: dict[str, Any] = {}
         self.frames: list[tuple[UserFunc, Scope]] = []  # user functions being called, innermost last
@@ -213,12 +215,29 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
     def st_If(self, s: ast.If, scope: Scope) -> None:
         test = self.ev(s.test, scope)
         t = self.tested(test, s.test, scope)
+        taken = self.branches.setdefault(s, set())
         if t is True:
+            taken.add(True)
             self.exec_block(s.body, scope)
         elif t is False:
+            taken.add(False)
             self.exec_block(s.orelse, scope)
         else:
+            taken.update((True, False))
             self.branch_both(test, s.body, s.orelse, s, scope)
+
+    def dead_lines(self, nodes: list[ast.AST]) -> list[tuple[int, int]]:
+        """Line ranges of the ``if`` branches among ``nodes`` that no run of them took (the
+        ROS_DISTRO guard of a Dashing-era call): code that never runs under this launch."""
+        out = []
+        for node in nodes:
+            taken = self.branches.get(node) if isinstance(node, ast.If) else None
+            if taken is None:
+                continue  # never reached: nothing known
+            for outcome, block in ((True, node.body), (False, node.orelse)):
+                if outcome not in taken and block:
+                    out.append((block[0].lineno, max(getattr(b, "end_lineno", b.lineno) or b.lineno for b in block)))
+        return out
 
     def st_For(self, s: ast.For, scope: Scope) -> None:
         items = calls.iterate(self, self.ev(s.iter, scope))

@@ -9,7 +9,9 @@ Recognised: ``create_publisher<T>("n", ...)``, ``create_subscription<T>("n", ...
 ``declare_parameter_if_not_declared(node, "n", ParameterValue(default))``; a class derived from
 ``rclcpp_lifecycle::LifecycleNode`` (or nav2's) marks a lifecycle node. Names are taken only from
 string literals or constants the file gives one literal; an endpoint named otherwise is kept as
-its kind and type (``NodeInterface.unnamed``).
+its kind and type (``NodeInterface.unnamed``). Each item is tagged with the class whose code holds
+it (``cpp_scopes.py``): an executable linking a library runs only some of its classes
+(``linked.py``).
 """
 from __future__ import annotations
 
@@ -17,11 +19,13 @@ import bisect
 import dataclasses
 import functools
 import re
+from collections.abc import Callable
 from typing import Any, NamedTuple, Protocol
 
 from physai_lint.model.span import Span
 
-from .model import ENDPOINT_KINDS, Endpoint, NodeInterface, ParamDecl
+from .cpp_scopes import CppFacts, owner_at, scopes
+from .model import Endpoint, NodeInterface, ParamDecl
 
 MAX_SOURCE = 2_000_000
 
@@ -503,38 +507,54 @@ def _interface(source: str = "") -> NodeInterface:
 def extract_cpp(files: list[tuple[str, str]], cache: Any = None) -> NodeInterface:
     """What the sources declare together; ``cache`` (a ``cache.ParseCache``) keeps what each
     file declares on disk across runs."""
+    return merge_facts([(_file_interface(path, text, cache), _everything) for path, text in files])
+
+
+def _everything(owner: str | None) -> bool:
+    return True
+
+
+def merge_facts(parts: list[tuple[CppFacts, Callable[[str | None], bool | str]]]) -> NodeInterface:
+    """The interface of the items of each part whose class its ``keep(class)`` accepts (``None``
+    for code outside any class); ``keep`` may also answer "unnamed": an endpoint is then kept as
+    its kind and type only (code that may or may not run), and a parameter or lifecycle base is
+    kept. The first declaration of a parameter wins; any declaration of it makes it read-only."""
     iface = _interface("extracted from C++ sources")
-    for path, text in files:
-        part = _file_interface(path, text, cache)
-        for kind in ENDPOINT_KINDS:
-            getattr(iface, kind).extend(getattr(part, kind))
-        iface.lifecycle = iface.lifecycle or part.lifecycle
-        iface.unnamed.extend(part.unnamed)
-        for name, decl in part.parameters.items():  # type: ignore[union-attr]
-            mine = iface.parameters.setdefault(name, dataclasses.replace(decl))  # type: ignore[union-attr]
-            if decl.read_only:  # a declaration in this file makes it read-only
-                mine.read_only = True
+    for part, keep in parts:
+        for kind, endpoint, owner in part.endpoints:
+            verdict = keep(owner)
+            if verdict == "unnamed":
+                iface.unnamed.append((kind, endpoint.type))
+            elif verdict:
+                getattr(iface, kind).append(endpoint)
+        iface.unnamed.extend((kind, type_) for kind, type_, owner in part.unnamed if keep(owner))
+        iface.lifecycle = iface.lifecycle or any(keep(owner) for owner in part.lifecycle)
+        for decl, owner in part.parameters:
+            if keep(owner):
+                mine = iface.parameters.setdefault(decl.name, dataclasses.replace(decl))  # type: ignore[union-attr]
+                if decl.read_only:
+                    mine.read_only = True
     return iface
 
 
-CACHE_KIND = "cpp-interface"  # the disk cache's kind for what one file declares
+CACHE_KIND = "cpp-facts-2"  # the disk cache's kind for what one file declares (2: with classes)
 
 
 @functools.lru_cache(maxsize=1024)
-def _file_interface(path: str, text: str, cache: Any = None) -> NodeInterface:
+def _file_interface(path: str, text: str, cache: Any = None) -> CppFacts:
     """What one file contributes, once per file (callers copy from it, never change it): a
     package's executables share sources (2,195 extractions of 601 files on the real-world corpus).
 
     A pure function of the path (spans name it) and the text: with a ``cache``, read from disk when
     this text was seen before. Files without a call word are not stored (the check is cheaper than
     a lookup), nor is what a failed extraction left."""
-    part = _interface()
+    part = CppFacts()
     if not _CALL_WORDS.search(text):
         return part
     key = cache.key(CACHE_KIND, path, text) if cache is not None else None
     if key is not None:
         hit = cache.get(key)
-        if type(hit) is NodeInterface:
+        if type(hit) is CppFacts:
             return hit
     try:
         _extract_one(path, text, part)
@@ -652,10 +672,13 @@ class _Whole:
     def __init__(self, text: str) -> None:
         self.toks = tokenize(text)
 
-    def anchors(self) -> list[tuple[list[Tok], int]]:
+    def anchors(self) -> list[tuple[list[Tok], int, int]]:
         toks = self.toks
         # only the identifiers extraction acts on (a comprehension over the list, not a loop)
-        return [(toks, i) for i, t in enumerate(toks) if t[1] in _LOOP_NAMES and t[0] == "id"]
+        return [(toks, i, -1) for i, t in enumerate(toks) if t[1] in _LOOP_NAMES and t[0] == "id"]
+
+    def classes(self) -> list[tuple[str | None, int, int]]:
+        return []  # (offsets are not known: nothing is attributed to a class)
 
     def constants(self) -> dict[str, str]:
         return _constants(self.toks)
@@ -808,14 +831,19 @@ class _Windows:
             toks += tokenize(self.text, start, end, self._line_of(ls), ls)
         return toks, i
 
-    def anchors(self) -> list[tuple[list[Tok], int]]:
+    def anchors(self) -> list[tuple[list[Tok], int, int]]:
+        """(tokens, index of the word, its offset) per anchor."""
         out = []
         for p, name in self.words:
             if name != "read_only":
                 win = self._window(p, name)
                 if win is not None:
-                    out.append(win)
+                    out.append((*win, p))
         return out
+
+    def classes(self) -> list[tuple[str | None, int, int]]:
+        """The scopes at namespace level (``cpp_scopes.scopes``)."""
+        return scopes(self.text, self.starts, self.ends)
 
     def constants(self) -> _LazyConstants:
         return _LazyConstants(self)
@@ -921,17 +949,56 @@ def _is_constant_name(toks: list[Tok], k: int) -> bool:
     return k >= 0 and toks[k].kind == "id" and toks[k].text not in ("return", "std", "string")
 
 
-def _extract_one(path: str, text: str, iface: NodeInterface) -> None:
+def _extract_one(path: str, text: str, facts: CppFacts) -> None:
     """Extract a file ``_file_interface`` found a call word in."""
-    _extract_from(path, _Windows.of(text) or _Whole(text), iface)
+    _extract_from(path, skim(text) or _Whole(text), facts)
 
 
-def _extract_from(path: str, view: _Whole | _Windows, iface: NodeInterface) -> None:
+@functools.lru_cache(maxsize=64)
+def skim(text: str) -> _Windows | None:
+    """``_Windows.of(text)``, for a while: telling which classes run in an executable reads again
+    the sources just extracted (``linked.py``)."""
+    return _Windows.of(text)
+
+
+class _Collector:
+    """Adds what extraction finds to a ``CppFacts``, each item with the class whose code holds
+    the word it was found at."""
+
+    def __init__(self, path: str, view: _Whole | _Windows, facts: CppFacts) -> None:
+        self.path, self.facts = path, facts
+        found = view.classes()
+        facts.classes = tuple((c, a, b) for c, a, b in found if c is not None)
+        self.scopes, self.firsts = found, [a for _, a, _ in found]
+        self.owner: str | None = None
+
+    def at(self, p: int) -> None:
+        """Items from here on are at offset ``p`` (-1: unknown)."""
+        self.owner = owner_at(self.scopes, self.firsts, p) if p >= 0 else None
+
+    def endpoint(self, kind: str, name: str | None, type_: str | None, tok: Tok | None) -> None:
+        if name is None:
+            self.facts.unnamed.append((kind, type_, self.owner))
+        else:
+            self.facts.endpoints.append((kind, Endpoint(name, type_, _span(self.path, tok)),
+                                         self.owner))
+
+    def parameter(self, decl: ParamDecl) -> None:
+        self.facts.parameters.append((decl, self.owner))
+
+    def lifecycle(self) -> None:
+        self.facts.lifecycle.append(self.owner)
+
+
+def _extract_from(path: str, view: _Whole | _Windows, facts: CppFacts) -> None:
     consts = view.constants()
     read_only = view.read_only()
-    for toks, i in view.anchors():
+    out = _Collector(path, view, facts)
+    anchors = view.anchors()
+    for toks, i, p in anchors:
         t = toks[i]
         name = t.text
+        out.at(p)
         prev = toks[i - 1].text if i > 0 else ""
         prev2 = toks[i - 2].text if i > 1 else ""
         if name == "LifecycleNode":
@@ -939,13 +1006,14 @@ def _extract_from(path: str, view: _Whole | _Windows, iface: NodeInterface) -> N
                     (i > 2 and toks[i - 3].text in _BASE_BEFORE and toks[i + 1].text in _BASE_AFTER)
                     or (i > 3 and toks[i - 3].text == "<" and toks[i - 4].text == "make_shared"
                         and toks[i + 1].text == ">")):
-                iface.lifecycle = True  # a lifecycle node's class
+                out.lifecycle()  # a lifecycle node's class
             continue
         if name in _TF_ENDPOINTS and prev == "::" and prev2 == "tf2_ros":
             # tf2_ros' listener subscribes to (and its broadcasters publish on) the absolute /tf and
             # /tf_static: nodes using them honour a ("/tf", "tf") remap like any other topic.
             for kind, topic in _TF_ENDPOINTS[name]:
-                getattr(iface, kind).append(Endpoint(topic, "tf2_msgs/msg/TFMessage", _span(path, t)))
+                out.facts.endpoints.append(
+                    (kind, Endpoint(topic, "tf2_msgs/msg/TFMessage", _span(path, t)), out.owner))
             continue
         if name in _ENDPOINT_CALLS or name in ("create_server",):
             j = i + 1
@@ -961,40 +1029,26 @@ def _extract_from(path: str, view: _Whole | _Windows, iface: NodeInterface) -> N
                 if len(args) >= 2:
                     n, tok = _name_of(args[1], consts)
                     kind = "action_servers" if name == "create_server" else "action_clients"
-                    if n is not None:
-                        getattr(iface, kind).append(Endpoint(n, ros_type(targ), _span(path, tok)))
-                    else:
-                        iface.unnamed.append((kind, ros_type(targ)))
+                    out.endpoint(kind, n, ros_type(targ), tok)
                 continue
             if ns == "image_transport":
                 if len(args) >= 2 and name in ("create_publisher", "create_subscription"):
                     n, tok = _name_of(args[1], consts)
-                    kind = _ENDPOINT_CALLS[name]
-                    if n is not None:
-                        getattr(iface, kind).append(
-                            Endpoint(n, "sensor_msgs/msg/Image", _span(path, tok)))
-                    else:
-                        iface.unnamed.append((kind, "sensor_msgs/msg/Image"))
+                    out.endpoint(_ENDPOINT_CALLS[name], n, "sensor_msgs/msg/Image", tok)
                 continue
             if name == "create_server" or not args or targ is None:
                 continue
             n, tok = _name_of(args[0], consts)
-            if n is not None:
-                getattr(iface, _ENDPOINT_CALLS[name]).append(
-                    Endpoint(n, ros_type(targ), _span(path, tok)))
-            else:
-                iface.unnamed.append((_ENDPOINT_CALLS[name], ros_type(targ)))
+            out.endpoint(_ENDPOINT_CALLS[name], n, ros_type(targ), tok)
         elif name in ("advertise", "subscribe", "advertiseCamera", "subscribeCamera") and \
                 prev in (".", "->"):
             parsed = _call_args(toks, i + 1)
             if parsed is None or not parsed[0]:
                 continue
-            n, tok = _name_of(parsed[0][0], consts)
+            args = parsed[0]
+            n, tok = _name_of(args[0], consts)
             kind = "publishers" if name.startswith("advertise") else "subscribers"
-            if n is None:
-                iface.unnamed.append((kind, "sensor_msgs/msg/Image"))
-                continue
-            getattr(iface, kind).append(Endpoint(n, "sensor_msgs/msg/Image", _span(path, tok)))
+            out.endpoint(kind, n, "sensor_msgs/msg/Image", tok)
         elif name in ("declare_parameter", "declare_parameter_if_not_declared",
                       "declare_or_get_parameter"):
             j = i + 1
@@ -1021,6 +1075,5 @@ def _extract_from(path: str, view: _Whole | _Windows, iface: NodeInterface) -> N
                     ptype = dtype
             decl = ParamDecl(n, ptype, default, span=_span(path, tok), source=path,
                              has_default=has_default)
-            decl = iface.parameters.setdefault(n, decl)  # type: ignore[union-attr]
-            if len(args) > k + 2 and _descriptor_read_only(args[k + 2], read_only):
-                decl.read_only = True
+            decl.read_only = len(args) > k + 2 and _descriptor_read_only(args[k + 2], read_only)
+            out.parameter(decl)

@@ -47,6 +47,8 @@ class CppFacts:
     parameters: list[tuple[ParamDecl, str | None]] = field(default_factory=list)  # each declaration
     lifecycle: list[str | None] = field(default_factory=list)  # a class making a lifecycle node
     classes: tuple[tuple[str, int, int], ...] = ()  # (class, start, end) of its code pieces
+    # message_filters subscribers this file declares (a header's members): name -> message type
+    filters: dict[str, str | None] = field(default_factory=dict)
 
     def empty(self) -> bool:
         return not (self.endpoints or self.unnamed or self.parameters or self.lifecycle)

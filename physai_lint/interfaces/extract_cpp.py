@@ -5,7 +5,9 @@ Recognised: ``create_publisher<T>("n", ...)``, ``create_subscription<T>("n", ...
 ``create_service<T>("n", ...)``, ``create_client<T>("n", ...)``, ``rclcpp_action::create_server<T>
 (node, "n", ...)`` / ``create_client``, image_transport ``create_publisher``/``create_subscription``
 (node first) and ``advertise``/``subscribe``/``advertiseCamera``/``subscribeCamera``,
-``declare_parameter<T>("n", default)`` / ``declare_parameter("n", default)`` and nav2's
+message_filters subscribers (``message_filters::Subscriber<T> sub_;`` constructed with a node and
+a topic: ``sub_(node, "n")``, ``make_shared<...>(node, "n")``, or ``sub_.subscribe(node, "n")``;
+image_transport's ``SubscriberFilter`` alike), ``declare_parameter<T>("n", default)`` / ``declare_parameter("n", default)`` and nav2's
 ``declare_parameter_if_not_declared(node, "n", ParameterValue(default))``; a class derived from
 ``rclcpp_lifecycle::LifecycleNode`` (or nav2's) marks a lifecycle node. Names are taken only from
 string literals or constants the file gives one literal; an endpoint named otherwise is kept as
@@ -335,12 +337,14 @@ def _template_args(toks: list[Tok], i: int) -> tuple[str | None, int]:
     return None, i
 
 
-def _call_args(toks: list[Tok], i: int) -> tuple[list[list[Tok]], int] | None:
-    """``toks[i]`` is ``(``: the top-level comma-separated arguments."""
-    if i >= len(toks) or toks[i].text != "(":
+def _call_args(toks: list[Tok], i: int, braces: bool = False
+               ) -> tuple[list[list[Tok]], int] | None:
+    """``toks[i]`` is ``(`` (or, with ``braces``, ``{``): the top-level comma-separated
+    arguments."""
+    if i >= len(toks) or not (toks[i].text == "(" or braces and toks[i].text == "{"):
         return None
     args: list[list[Tok]] = [[]]
-    stack = ["("]
+    stack = [toks[i].text]
     j = i + 1
     while j < len(toks) and j < i + 4000:
         t = toks[j]
@@ -537,7 +541,7 @@ def merge_facts(parts: list[tuple[CppFacts, Callable[[str | None], bool | str]]]
     return iface
 
 
-CACHE_KIND = "cpp-facts-2"  # the disk cache's kind for what one file declares (2: with classes)
+CACHE_KIND = "cpp-facts-3"  # the disk cache's kind for what one file declares (3: filter members)
 
 
 @functools.lru_cache(maxsize=1024)
@@ -598,11 +602,12 @@ def _descriptor_read_only(arg: list[Tok], names: set[str]) -> bool:
     return False
 
 
-# Every call _extract_one looks for names one of these; a file without any has nothing to give
-# (two thirds of the C++ files of a workspace), and tokenizing it is most of the cost.
-_CALL_WORDS = re.compile(r"create_(?:publisher|subscription|service|client|server)|advertise|subscribe"
-                         r"|declare_(?:parameter|or_get_parameter)|Transform(?:Listener|Broadcaster)"
-                         r"|LifecycleNode")
+# Every call _extract_one looks for names one of these (a message_filters subscriber's class is
+# ``message_filters::Subscriber``); a file without any has nothing to give (two thirds of the C++
+# files of a workspace), and tokenizing it is most of the cost.
+_WORDS = (r"create_(?:publisher|subscription|service|client|server)|advertise|subscribe"
+          r"|declare_(?:parameter|or_get_parameter)|Transform(?:Listener|Broadcaster)|LifecycleNode")
+_CALL_WORDS = re.compile(_WORDS + "|message_filters")
 _TF_ENDPOINTS = {
     "TransformListener": (("subscribers", "/tf"), ("subscribers", "/tf_static")),
     "TransformBroadcaster": (("publishers", "/tf"),),
@@ -614,7 +619,7 @@ _TF_ENDPOINTS = {
 _LOOP_NAMES = frozenset(_TF_ENDPOINTS) | frozenset(_ENDPOINT_CALLS) | {
     "create_server", "advertise", "subscribe", "advertiseCamera", "subscribeCamera",
     "declare_parameter", "declare_parameter_if_not_declared", "declare_or_get_parameter",
-    "LifecycleNode"}
+    "LifecycleNode", "Subscriber", "SubscriberFilter"}
 # The namespaces of the lifecycle node classes a node's class derives from (nav2's own wrapper:
 # nav2_util up to jazzy, nav2 after), and the tokens a base class or a constructor's initialiser
 # names one after, or ``make_shared<...>`` makes one with.
@@ -642,8 +647,9 @@ _RAW_PREFIXES = frozenset(p for p in _STR_PREFIX if p.endswith("R"))
 # a part of every word an anchor can be (_LOOP_NAMES and read_only); the identifier around it
 # decides. (No look-around, nor optional prefixes: either costs the regex its fast scan for the
 # first character, three times the time.)
-_ANCHOR = re.compile(_CALL_WORDS.pattern + "|read_only")
+_ANCHOR = re.compile(_WORDS + "|read_only|Subscriber")
 _ANCHOR_WORDS = _LOOP_NAMES | {"read_only"}
+_FOUR_BEFORE = frozenset({"LifecycleNode", "Subscriber", "SubscriberFilter"})
 
 
 _DIGITS = frozenset("0123456789")
@@ -676,6 +682,11 @@ class _Whole:
         toks = self.toks
         # only the identifiers extraction acts on (a comprehension over the list, not a loop)
         return [(toks, i, -1) for i, t in enumerate(toks) if t[1] in _LOOP_NAMES and t[0] == "id"]
+
+    def uses(self, name: str) -> list[tuple[list[Tok], int, int]]:
+        """Where the identifier ``name`` is (a message_filters member's name)."""
+        toks = self.toks
+        return [(toks, i, -1) for i, t in enumerate(toks) if t[1] == name and t[0] == "id"]
 
     def classes(self) -> list[tuple[str | None, int, int]]:
         return []  # (offsets are not known: nothing is attributed to a class)
@@ -806,11 +817,12 @@ class _Windows:
             k = text.find(";", self.ends[bisect.bisect_right(self.starts, k) - 1])
         return len(self.text) if k < 0 else k + 1
 
-    def _window(self, p: int, name: str) -> tuple[list[Tok], int] | None:
+    def _window(self, p: int, name: str, calls: bool = True) -> tuple[list[Tok], int] | None:
         """The tokens from a line start with at least two tokens (four before a
-        ``LifecycleNode``) before offset ``p`` to the end of its statement, and the index of the
-        token at ``p``."""
-        before = 4 if name == "LifecycleNode" else 2
+        ``LifecycleNode`` or a message_filters ``Subscriber``: ``make_shared<ns::Subscriber``)
+        before offset ``p`` to the end of its statement (past a lambda's body in a call, unless
+        not ``calls``), and the index of the token at ``p``."""
+        before = 4 if name in _FOUR_BEFORE else 2
         end = self._statement_end(p)
         ls = self._line_start(p)
         for _ in range(8):  # a line back at a time, while fewer than ``before`` tokens come first
@@ -825,7 +837,7 @@ class _Windows:
             ls = self._line_start(ls - 1)
         # Extraction reads up to the ";" that ends the call: past a ";" inside braces opened
         # after the word (a lambda's body), as ``_call_args`` does, up to its limit.
-        while end < len(self.text) and len(toks) < i + 4400 and _brace_open(toks, i):
+        while calls and end < len(self.text) and len(toks) < i + 4400 and _brace_open(toks, i):
             start, end = end, self._statement_end(end)
             ls = self.text.rfind("\n", 0, start) + 1
             toks += tokenize(self.text, start, end, self._line_of(ls), ls)
@@ -836,9 +848,24 @@ class _Windows:
         out = []
         for p, name in self.words:
             if name != "read_only":
-                win = self._window(p, name)
+                win = self._window(p, name, name not in _FILTER_CLASSES)
                 if win is not None:
                     out.append((*win, p))
+        return out
+
+    def uses(self, name: str) -> list[tuple[list[Tok], int, int]]:
+        """Where the identifier ``name`` is, outside comments and strings (a message_filters
+        member's name: its initialiser ``name_(node, "topic")``)."""
+        out = []
+        text = self.text
+        # (only a name a call's or a brace's arguments follow)
+        for m in re.finditer(re.escape(name) + r"\s*[({]", text):
+            p = m.start()
+            if p and text[p - 1] in _IDCHARS or self._inside(p):
+                continue
+            win = self._window(p, name, False)  # (an initialiser's arguments end before its body)
+            if win is not None:
+                out.append((*win, p))
         return out
 
     def classes(self) -> list[tuple[str | None, int, int]]:
@@ -995,6 +1022,9 @@ def _extract_from(path: str, view: _Whole | _Windows, facts: CppFacts) -> None:
     read_only = view.read_only()
     out = _Collector(path, view, facts)
     anchors = view.anchors()
+    declared: set[tuple[int, int]] = set()  # where the declarations name them
+    filters = _filter_members(anchors, consts, out, declared)  # message_filters members -> type
+    facts.filters = filters
     for toks, i, p in anchors:
         t = toks[i]
         name = t.text
@@ -1008,6 +1038,8 @@ def _extract_from(path: str, view: _Whole | _Windows, facts: CppFacts) -> None:
                         and toks[i + 1].text == ">")):
                 out.lifecycle()  # a lifecycle node's class
             continue
+        if name in _FILTER_CLASSES:
+            continue  # (``_filter_members`` read them)
         if name in _TF_ENDPOINTS and prev == "::" and prev2 == "tf2_ros":
             # tf2_ros' listener subscribes to (and its broadcasters publish on) the absolute /tf and
             # /tf_static: nodes using them honour a ("/tf", "tf") remap like any other topic.
@@ -1047,6 +1079,14 @@ def _extract_from(path: str, view: _Whole | _Windows, facts: CppFacts) -> None:
                 continue
             args = parsed[0]
             n, tok = _name_of(args[0], consts)
+            receiver = toks[i - 2].text if i > 1 and toks[i - 2].kind == "id" else ""
+            if name == "subscribe" and (receiver in filters or n is None and _filter_subscribe(
+                    args, consts)):
+                # message_filters' ``sub_.subscribe(node, "topic", qos)``, not image_transport's
+                # ``it.subscribe("topic", queue_size, callback)``
+                n, tok = _name_of(args[1], consts) if len(args) > 1 else (None, None)
+                out.endpoint("subscribers", n, filters.get(receiver), tok)
+                continue
             kind = "publishers" if name.startswith("advertise") else "subscribers"
             out.endpoint(kind, n, "sensor_msgs/msg/Image", tok)
         elif name in ("declare_parameter", "declare_parameter_if_not_declared",
@@ -1077,3 +1117,148 @@ def _extract_from(path: str, view: _Whole | _Windows, facts: CppFacts) -> None:
                              has_default=has_default)
             decl.read_only = len(args) > k + 2 and _descriptor_read_only(args[k + 2], read_only)
             out.parameter(decl)
+    for member in sorted(filters):
+        for toks, i, p in view.uses(member):
+            if (toks[i].line, toks[i].col) not in declared:
+                out.at(p)
+                _filter_initialiser(toks, i, filters[member], consts, out)
+
+
+# ---- message_filters ----------------------------------------------------------------------------
+# ``message_filters::Subscriber<T> sub_;`` subscribes when constructed with a node and a topic
+# (``sub_(node, "topic", qos)`` in a constructor's initialisers, ``make_shared<...>(node, "topic")``)
+# or told to (``sub_.subscribe(node, "topic", qos)``); image_transport's ``SubscriberFilter`` is
+# the same for images.
+
+_FILTER_CLASSES = {"Subscriber": "message_filters", "SubscriberFilter": "image_transport"}
+_MAKERS = frozenset({"make_shared", "make_unique"})
+_HOLDERS = frozenset({"shared_ptr", "unique_ptr"})
+
+
+@functools.lru_cache(maxsize=256)
+def member_initialisers(path: str, text: str, members: tuple[tuple[str, str | None], ...]
+                        ) -> CppFacts:
+    """The subscriptions a source's constructors make by initialising message_filters
+    ``members`` (name, message type) that another file (its header) declares:
+    ``odom_sub_(node, "odom/filtered", qos)``."""
+    facts = CppFacts()
+    try:
+        view = skim(text) or _Whole(text)
+        out = _Collector(path, view, facts)
+        consts = view.constants()
+        for member, type_ in members:
+            for toks, i, p in view.uses(member):
+                out.at(p)
+                _filter_initialiser(toks, i, type_, consts, out)
+    except (RecursionError, IndexError, ValueError):
+        pass  # what was found before the failure stays
+    facts.classes = ()  # (the source's own facts hold them)
+    return facts
+
+
+def _filter_members(anchors: list[tuple[list[Tok], int, int]], consts: _Constants,
+                    out: _Collector, declared: set[tuple[int, int]]) -> dict[str, str | None]:
+    """The members (and variables) declared as message_filters subscribers, with their message
+    types (and in ``declared`` where their declarations name them); records the subscriptions
+    constructed with a topic on the way."""
+    members: dict[str, str | None] = {}
+    for toks, i, p in anchors:
+        name = toks[i].text
+        if name not in _FILTER_CLASSES or i < 2 or toks[i - 1].text != "::" \
+                or toks[i - 2].text != _FILTER_CLASSES[name]:
+            continue
+        out.at(p)
+        j = i + 1
+        type_: str | None = "sensor_msgs/msg/Image" if name == "SubscriberFilter" else None
+        if name == "Subscriber":
+            if j >= len(toks) or toks[j].text != "<":
+                continue
+            targ, j = _template_args(toks, j)
+            type_ = ros_type(_first_template_arg(targ))
+        before = toks[i - 3].text if i > 2 else ""
+        if before == "<" and j < len(toks) and toks[j].text == ">":  # inside make_shared<...>
+            j += 1
+            maker = toks[i - 4].text if i > 3 else ""
+            if maker in _MAKERS:
+                _filter_construction(toks, j, type_, consts, out)
+                continue
+            if maker not in _HOLDERS:
+                continue
+        elif before == "new":
+            _filter_construction(toks, j, type_, consts, out)
+            continue
+        while j + 1 < len(toks) and toks[j].kind == "id":  # ``Subscriber<T> a_, b_{node, "t"};``
+            members[toks[j].text] = type_
+            declared.add((toks[j].line, toks[j].col))
+            _filter_construction(toks, j + 1, type_, consts, out)
+            j = _skip_initialiser(toks, j + 1)
+            if j >= len(toks) or toks[j].text != ",":
+                break
+            j += 1
+    return members
+
+
+def _filter_construction(toks: list[Tok], j: int, type_: str | None, consts: _Constants,
+                         out: _Collector) -> None:
+    """``(node, "topic", ...)`` or ``{node, "topic", ...}`` at ``toks[j]``: a subscription (with
+    fewer arguments, or a string first, it is something else: ``subscribe`` comes later). Not
+    past a ";" (a window of tokens ends there: a lambda's body is no topic anyway)."""
+    parsed = _call_args(toks, j, braces=True)
+    if parsed is not None and any(t.text == ";" for t in toks[j:parsed[1]]):
+        return
+    if parsed is not None and len(parsed[0]) >= 2 and not _is_string(parsed[0][0]):
+        n, tok = _name_of(parsed[0][1], consts)
+        out.endpoint("subscribers", n, type_, tok)
+
+
+def _filter_initialiser(toks: list[Tok], i: int, type_: str | None, consts: _Constants,
+                        out: _Collector) -> None:
+    """``member_(node, "topic", ...)`` in a constructor's initialisers."""
+    if i and toks[i - 1].text in (":", ","):
+        _filter_construction(toks, i + 1, type_, consts, out)
+
+
+def _skip_initialiser(toks: list[Tok], j: int) -> int:
+    """The index of the "," after a declarator's initialiser (``(...)``, ``{...}``, ``= ...``)
+    at ``j``, or of the ";" that ends the statement (a window of tokens ends there)."""
+    depth = 0
+    while j < len(toks):
+        t = toks[j].text
+        if t in "({[":
+            depth += 1
+        elif t in ")}]":
+            depth -= 1
+        elif t == ";" or depth == 0 and t == ",":
+            return j
+        j += 1
+    return j
+
+
+def _filter_subscribe(args: list[list[Tok]], consts: _Constants) -> bool:
+    """Whether ``x.subscribe(args)`` is message_filters' (a node first, the topic second) rather
+    than image_transport's (the topic first, then a queue size)."""
+    first = args[0]
+    if any(t.kind == "id" and (t.text == "this" or "node" in t.text.lower()
+                               or t.text == "shared_from_this") for t in first):
+        return True
+    return len(args) > 1 and _name_of(args[1], consts)[0] is not None
+
+
+def _is_string(arg: list[Tok]) -> bool:
+    return len(arg) == 1 and arg[0].kind == "str"
+
+
+def _first_template_arg(targ: str | None) -> str | None:
+    """``A, B<C, D>`` -> ``A``."""
+    if targ is None:
+        return None
+    depth = 0
+    for k, c in enumerate(targ):
+        if c == "<":
+            depth += 1
+        elif c == ">":
+            depth -= 1
+        elif c == "," and depth == 0:
+            return targ[:k]
+    return targ
+

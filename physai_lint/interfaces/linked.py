@@ -12,6 +12,10 @@ may or may not run: its endpoints are kept as their kind and type only (``unname
 dangling-topic rules back off), as is every library endpoint when the executable's code names
 no library class that declares something. Parameters and lifecycle bases follow the classes
 too; those of code that may run are kept, as they were before classes were told apart.
+
+A source's constructors may initialise message_filters members its own header declares
+(``odom_sub_(node, "odom/filtered", qos)``, the member in ``ros_robot_localization_listener.hpp``):
+that header is read when the source registers a filter's callback.
 """
 from __future__ import annotations
 
@@ -22,14 +26,19 @@ from collections.abc import Callable, Iterable
 from typing import Any
 
 from .cpp_scopes import CppFacts, blank_code, scopes
-from .extract_cpp import _file_interface, merge_facts, skim, tokenize
+from .extract_cpp import _file_interface, member_initialisers, merge_facts, skim, tokenize
 from .model import NodeInterface
 
 Reader = Callable[[str], "str | None"]
 
 _INCLUDE = re.compile(r'#[ \t]*include[ \t]*[<"]([^">]+\.(?:h|hh|hpp|hxx))[">]')
+_INCLUDE_WORD = re.compile(r"#[ \t]*include\b")
 _ALIAS = re.compile(r"\busing\s+(\w+)\s*=\s*([^;]*);|\btypedef\s+([^;]*?)\b(\w+)\s*;")
 _MAX_INCLUDES = 32  # headers read per executable to find aliases
+# a message_filters subscriber's messages reach a callback registered on it, or on a synchroniser
+# it is connected to (constructed with it, or ``connectInput``)
+_FILTER_OUTPUT = ("registerCallback", "connectInput")
+_FILTER_DECLARATION = re.compile(r"message_filters::Subscriber\b|image_transport::SubscriberFilter")
 _WORD = re.compile(r"[A-Za-z_]\w*")
 
 
@@ -38,10 +47,10 @@ def extract_linked(own: list[tuple[str, str]], library: list[tuple[str, str]], r
     """The interface of an executable built from ``own`` sources and ``library`` sources (those
     a linked library brings), with ``roots`` the classes known to run (a component's plugin
     class, qualified or not); ``read`` reads the headers the own sources include."""
-    own_parts = [_file_interface(path, text, cache) for path, text in own]
+    own_parts = [part for path, text in own for part in _facts(path, text, cache, read)]
     if not library:
         return merge_facts([(part, _own) for part in own_parts])
-    lib_parts = [(text, _file_interface(path, text, cache)) for path, text in library]
+    lib_parts = [(text, part) for path, text in library for part in _facts(path, text, cache, read)]
     holders = {owner for _, part in lib_parts for owner in _owners(part) if owner is not None}
     runs = _running_classes(own, lib_parts, roots, read, holders)
     sure = bool(runs & holders)
@@ -52,6 +61,33 @@ def extract_linked(own: list[tuple[str, str]], library: list[tuple[str, str]], r
         return owner in runs
 
     return merge_facts([(part, _own) for part in own_parts] + [(part, keep) for _, part in lib_parts])
+
+
+def _facts(path: str, text: str, cache: Any, read: Reader | None) -> list[CppFacts]:
+    """What a source declares, and the subscriptions its constructors make by initialising the
+    message_filters members its own header declares (``foo.cpp`` including ``.../foo.hpp``)."""
+    part = _file_interface(path, text, cache)
+    if read is None or not part.classes or not any(w in text for w in _FILTER_OUTPUT):
+        return [part]  # (a filter's messages reach code only through those calls)
+    header = _own_header(path, text, read)
+    if header is None or not _FILTER_DECLARATION.search(header[1]):
+        return [part]
+    members = tuple(sorted((n, t) for n, t in _file_interface(*header, cache).filters.items()
+                           if n not in part.filters))
+    return [part, member_initialisers(path, text, members)] if members else [part]
+
+
+def _own_header(path: str, text: str, read: Reader) -> tuple[str, str] | None:
+    """The header a source includes that has its name (``src/foo.cpp``: ``"pkg/foo.hpp"``)."""
+    stem = posixpath.splitext(posixpath.basename(path))[0]
+    if path.endswith((".h", ".hh", ".hpp", ".hxx")):
+        return None
+    for m in _INCLUDE_WORD.finditer(text):
+        line_end = text.find("\n", m.end())
+        include = _INCLUDE.match(text, m.start(), len(text) if line_end < 0 else line_end)
+        if include and posixpath.splitext(posixpath.basename(include.group(1)))[0] == stem:
+            return _read_include(path, include.group(1), read)
+    return None
 
 
 def _own(owner: str | None) -> bool:

@@ -63,6 +63,10 @@ CALLS = [
     ('s = create_subscription<a::msg::B>("lam", 1, [this](B m) {\n  f(m); if (x) { g(); }\n  for (;;) {}\n});'),
     'void Foo::subscribe() {\n  a(); b();\n}\nnamespace { int k; }',
     'create_service<a::srv::B>("s", [](){ return; }',
+    ('#include <message_filters/subscriber.h>\nFoo::Foo() : Node("f"),\n  odom_(this, "odom"), n_{1}\n'
+     '{ sub_.subscribe(this, "scan", qos); }\nmessage_filters::Subscriber<a::msg::B> odom_, b_{this, "b"};'),
+    ('x_ = std::make_shared<message_filters::\nSubscriber<a::msg::B, rclcpp::Node>>(node, kTopic);\n'
+     'y_ = new message_filters::Subscriber<a::msg::C>(node, "c"); f(message_filters::Subscriber<a::msg::D> & d) {}'),
 ]
 
 
@@ -97,7 +101,8 @@ _PIECES = CALLS + [
     ".", ",", "=", "[", "]", "R", "u8", "L", "1'0", "x", "true", "read_only", "kTopic", "d",
     "create_publisher", "declare_parameter", "advertise", "tf2_ros", "TransformListener", "é",
     '"x", 1);', "<a::msg::B>", 'k = "v";', 'k[] = "v";', 'k{"v"}', "(k, 1)", "1.e5", "1.f", ".5",
-    "0x1'F", "1e+", "[](){ f(); }", "{ x; }"]
+    "0x1'F", "1e+", "[](){ f(); }", "{ x; }", "message_filters::Subscriber<a::msg::B> m_", "m_(this, ",
+    "m_{node, ", "m_.subscribe(", "Foo::Foo() : "]
 
 
 @settings(max_examples=2000, deadline=None)

@@ -61,6 +61,7 @@ def scopes(text: str, starts: list[int], ends: list[int]) -> list[Scope]:
     leaves unmatched leaves the rest of the file in one scope; an unclosed one runs to the end."""
     out: list[Scope] = []
     stack: list[tuple[str, str | None, int]] = []  # (kind, class, head start) per open brace
+    depth = 0  # braces open inside the innermost scope or initialiser (not on the stack)
     region = 0  # where the current run of namespace-level declarations starts
     inits: list[tuple[int, int]] = []  # initialising braces since ``region``
     n_skim, k = len(starts), 0
@@ -70,24 +71,26 @@ def scopes(text: str, starts: list[int], ends: list[int]) -> list[Scope]:
             k += 1
         if k < n_skim and starts[k] <= q:
             continue  # in a comment, string or preprocessor line
-        if text[q] == "{":
-            if stack and stack[-1][0] != "namespace":
-                stack.append(("inner", None, 0))
+        if depth:  # inside a scope or an initialiser: only its end matters
+            depth += 1 if text[q] == "{" else -1
+            if depth:
                 continue
+            kind, cls, head = stack.pop()
+            if kind == "init":
+                inits.append((head, q))
+                continue
+            out.append((cls, head, q + 1))
+            region, inits = q + 1, []
+        elif text[q] == "{":
             head = _head_start(text, region, q, starts, ends, inits)
             kind, cls = _classify(blank_code(text, head, q, starts, ends))
             stack.append((kind, cls, head))
             if kind == "namespace":
                 region, inits = q + 1, []
-        elif stack:
-            kind, cls, head = stack.pop()
-            if kind == "inner":
-                continue
-            if kind == "init":
-                inits.append((head, q))
-                continue
-            if kind == "scope":
-                out.append((cls, head, q + 1))
+            else:
+                depth = 1
+        elif stack:  # a namespace's end
+            stack.pop()
             region, inits = q + 1, []
     out.extend((cls, head, len(text)) for kind, cls, head in stack if kind == "scope")
     out.sort(key=lambda s: s[1])

@@ -837,7 +837,12 @@ class _Windows:
             ls = self._line_start(ls - 1)
         # Extraction reads up to the ";" that ends the call: past a ";" inside braces opened
         # after the word (a lambda's body), as ``_call_args`` does, up to its limit.
-        while calls and end < len(self.text) and len(toks) < i + 4400 and _brace_open(toks, i):
+        stack: list[str] = []  # (the brackets open after the word in the tokens scanned so far)
+        scanned = i + 1
+        while calls and end < len(self.text) and len(toks) < i + 4400:
+            brace_open, scanned = _brace_open(toks, scanned, stack)
+            if not brace_open:
+                break
             start, end = end, self._statement_end(end)
             ls = self.text.rfind("\n", 0, start) + 1
             toks += tokenize(self.text, start, end, self._line_of(ls), ls)
@@ -940,19 +945,21 @@ class _LazyConstants:
         return next(iter(values)) if len(values) == 1 else None
 
 
-def _brace_open(toks: list[Tok], i: int) -> bool:
-    """Whether a "{" opened after ``toks[i]`` is still open at the end of ``toks`` (no bracket
-    opened before it closed first)."""
-    stack: list[str] = []
-    for t in toks[i + 1:]:
+def _brace_open(toks: list[Tok], start: int, stack: list[str]) -> tuple[bool, int]:
+    """Whether a "{" opened after the word is still open at the end of ``toks`` (no bracket
+    opened before the word closed first), going on from ``toks[start]`` with ``stack`` the
+    brackets open before it (updated); and where the next call goes on. (A window grows a
+    statement at a time; scanning it whole again each time took half of extraction's time.)"""
+    for k in range(start, len(toks)):
+        t = toks[k]
         if t[0] == "op":
             if t[1] in "([{":
                 stack.append(t[1])
             elif t[1] in ")]}":
                 if not stack:
-                    return False
+                    return False, len(toks)
                 stack.pop()
-    return "{" in stack
+    return "{" in stack, len(toks)
 
 
 def _constant_name_at(toks: list[Tok], j: int) -> int | None:

@@ -10,8 +10,9 @@ component, and, transitively, the classes a running class's code names (a node b
 helper). What the library's code outside any class declares (a free function's subscription)
 may or may not run: its endpoints are kept as their kind and type only (``unnamed``: the
 dangling-topic rules back off), as is every library endpoint when the executable's code names
-no library class that declares something. Parameters and lifecycle bases follow the classes
-too; those of code that may run are kept, as they were before classes were told apart.
+no library class that declares something (and it is no component whose class's code is known).
+Parameters and lifecycle bases follow the classes too; those of code that may run are kept, as
+they were before classes were told apart.
 
 A source's constructors may initialise message_filters members its own header declares
 (``odom_sub_(node, "odom/filtered", qos)``, the member in ``ros_robot_localization_listener.hpp``):
@@ -46,14 +47,16 @@ def extract_linked(own: list[tuple[str, str]], library: list[tuple[str, str]], r
                    cache: Any = None, read: Reader | None = None) -> NodeInterface:
     """The interface of an executable built from ``own`` sources and ``library`` sources (those
     a linked library brings), with ``roots`` the classes known to run (a component's plugin
-    class, qualified or not); ``read`` reads the headers the own sources include."""
+    class, qualified or not); ``read`` reads the headers the sources include."""
     own_parts = [part for path, text in own for part in _facts(path, text, cache, read)]
     if not library:
         return merge_facts([(part, _own) for part in own_parts])
     lib_parts = [(text, part) for path, text in library for part in _facts(path, text, cache, read)]
     holders = {owner for _, part in lib_parts for owner in _owners(part) if owner is not None}
     runs = _running_classes(own, lib_parts, roots, read, holders)
-    sure = bool(runs & holders)
+    # Sure of what runs: a class that declares something, or a root whose code is known (a
+    # component declaring nothing extraction sees still runs no other class).
+    sure = bool(runs & holders) or bool(runs & {r.rsplit("::", 1)[-1] for r in roots})
 
     def keep(owner: str | None) -> bool | str:
         if owner is None or not sure:
@@ -107,15 +110,16 @@ def _running_classes(own: list[tuple[str, str]], lib_parts: list[tuple[str, CppF
     roots, and the classes their code names, transitively, until every class that declares
     something (``holders``) is reached or no code is left. The code of the classes in library
     files without a call word (not extracted) is read only when they name a holder not reached
-    otherwise: a node's helper may build it."""
+    otherwise (a node's helper may build it) or a root whose code is not known yet."""
     code: dict[str, list[tuple[str, int, int]]] = {}  # class -> (text, start, end) of its code
     for text, part in lib_parts:
         for cls, start, end in part.classes:
             code.setdefault(cls, []).append((text, start, end))
     runs = _closure(own, code, roots, read, holders)
-    missing = holders - runs
-    # (a class building a holder names it: only the files that name one are read)
-    unread = [text for text, part in lib_parts if part.empty() and not part.classes
+    missing = holders - runs | {r.rsplit("::", 1)[-1] for r in roots} - set(code)
+    read_texts = {id(text) for text, part in lib_parts if not part.empty() or part.classes}
+    # (a class building a holder names it, a root's code names it: only those files are read)
+    unread = [text for text, _ in lib_parts if id(text) not in read_texts
               and any(h in text for h in missing)]
     if unread:
         for text in unread:

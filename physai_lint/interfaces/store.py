@@ -319,10 +319,11 @@ class InterfaceStore:
             return
         files: list[tuple[str, str]] = []
         lib: list[tuple[str, str]] = []
+        from_library = set(library)
         for p in (list(own) + list(library))[:500]:
             t = reader(p)
             if t is not None:
-                (lib if p in library else files).append((p, t))
+                (lib if p in from_library else files).append((p, t))
         if files or lib:
             self.add_extracted(package, executable, files, lib, roots)
 

@@ -211,3 +211,20 @@ def test_a_class_named_in_a_comment_or_string_does_not_run(tmp_path: Path, demo_
     (filter_node,) = _interfaces(tmp_path, demo_package, {**FILES, "src/filter_node.cpp": main},
                                  "filter_node")
     assert _names(filter_node)["publishers"] == ["filtered"]
+
+
+def test_a_component_declaring_nothing_seen_runs_no_other_class(tmp_path: Path,
+                                                                demo_package: Any) -> None:
+    # its endpoints come through a helper extraction does not read (Autoware's API adaptors)
+    fail_safe = """namespace demo {
+FailSafeNode::FailSafeNode(const rclcpp::NodeOptions & options) : Node("fail_safe", options) {
+  adaptor.init_pub(pub_mrm_state_);
+}
+}  // namespace demo
+"""
+    cmake = COMPONENTS_CMAKE.replace("src/resize.cpp", "src/resize.cpp src/fail_safe.cpp").replace(
+        '"demo::ResizeNode"', '"demo::ResizeNode" "demo::FailSafeNode"')
+    files = {"CMakeLists.txt": cmake, "src/rectify.cpp": RECTIFY, "src/resize.cpp": RESIZE,
+             "src/fail_safe.cpp": fail_safe}
+    (node,) = _interfaces(tmp_path, demo_package, files, "demo::FailSafeNode")
+    assert _names(node) == {} and node.unnamed == []

@@ -5,11 +5,15 @@ Recognised: ``create_publisher<T>("n", ...)``, ``create_subscription<T>("n", ...
 ``create_service<T>("n", ...)``, ``create_client<T>("n", ...)``, ``rclcpp_action::create_server<T>
 (node, "n", ...)`` / ``create_client``, image_transport ``create_publisher``/``create_subscription``
 (node first) and ``advertise``/``subscribe``/``advertiseCamera``/``subscribeCamera``,
-``declare_parameter<T>("n", default)`` / ``declare_parameter("n", default)`` and nav2's
+message_filters subscribers (``message_filters::Subscriber<T> sub_;`` constructed with a node and
+a topic: ``sub_(node, "n")``, ``make_shared<...>(node, "n")``, or ``sub_.subscribe(node, "n")``;
+image_transport's ``SubscriberFilter`` alike), ``declare_parameter<T>("n", default)`` / ``declare_parameter("n", default)`` and nav2's
 ``declare_parameter_if_not_declared(node, "n", ParameterValue(default))``; a class derived from
 ``rclcpp_lifecycle::LifecycleNode`` (or nav2's) marks a lifecycle node. Names are taken only from
 string literals or constants the file gives one literal; an endpoint named otherwise is kept as
-its kind and type (``NodeInterface.unnamed``).
+its kind and type (``NodeInterface.unnamed``). Each item is tagged with the class whose code holds
+it (``cpp_scopes.py``): an executable linking a library runs only some of its classes
+(``linked.py``).
 """
 from __future__ import annotations
 
@@ -17,11 +21,13 @@ import bisect
 import dataclasses
 import functools
 import re
+from collections.abc import Callable
 from typing import Any, NamedTuple, Protocol
 
 from physai_lint.model.span import Span
 
-from .model import ENDPOINT_KINDS, Endpoint, NodeInterface, ParamDecl
+from .cpp_scopes import CppFacts, owner_at, scopes
+from .model import Endpoint, NodeInterface, ParamDecl
 
 MAX_SOURCE = 2_000_000
 
@@ -331,12 +337,14 @@ def _template_args(toks: list[Tok], i: int) -> tuple[str | None, int]:
     return None, i
 
 
-def _call_args(toks: list[Tok], i: int) -> tuple[list[list[Tok]], int] | None:
-    """``toks[i]`` is ``(``: the top-level comma-separated arguments."""
-    if i >= len(toks) or toks[i].text != "(":
+def _call_args(toks: list[Tok], i: int, braces: bool = False
+               ) -> tuple[list[list[Tok]], int] | None:
+    """``toks[i]`` is ``(`` (or, with ``braces``, ``{``): the top-level comma-separated
+    arguments."""
+    if i >= len(toks) or not (toks[i].text == "(" or braces and toks[i].text == "{"):
         return None
     args: list[list[Tok]] = [[]]
-    stack = ["("]
+    stack = [toks[i].text]
     j = i + 1
     while j < len(toks) and j < i + 4000:
         t = toks[j]
@@ -503,38 +511,54 @@ def _interface(source: str = "") -> NodeInterface:
 def extract_cpp(files: list[tuple[str, str]], cache: Any = None) -> NodeInterface:
     """What the sources declare together; ``cache`` (a ``cache.ParseCache``) keeps what each
     file declares on disk across runs."""
+    return merge_facts([(_file_interface(path, text, cache), _everything) for path, text in files])
+
+
+def _everything(owner: str | None) -> bool:
+    return True
+
+
+def merge_facts(parts: list[tuple[CppFacts, Callable[[str | None], bool | str]]]) -> NodeInterface:
+    """The interface of the items of each part whose class its ``keep(class)`` accepts (``None``
+    for code outside any class); ``keep`` may also answer "unnamed": an endpoint is then kept as
+    its kind and type only (code that may or may not run), and a parameter or lifecycle base is
+    kept. The first declaration of a parameter wins; any declaration of it makes it read-only."""
     iface = _interface("extracted from C++ sources")
-    for path, text in files:
-        part = _file_interface(path, text, cache)
-        for kind in ENDPOINT_KINDS:
-            getattr(iface, kind).extend(getattr(part, kind))
-        iface.lifecycle = iface.lifecycle or part.lifecycle
-        iface.unnamed.extend(part.unnamed)
-        for name, decl in part.parameters.items():  # type: ignore[union-attr]
-            mine = iface.parameters.setdefault(name, dataclasses.replace(decl))  # type: ignore[union-attr]
-            if decl.read_only:  # a declaration in this file makes it read-only
-                mine.read_only = True
+    for part, keep in parts:
+        for kind, endpoint, owner in part.endpoints:
+            verdict = keep(owner)
+            if verdict == "unnamed":
+                iface.unnamed.append((kind, endpoint.type))
+            elif verdict:
+                getattr(iface, kind).append(endpoint)
+        iface.unnamed.extend((kind, type_) for kind, type_, owner in part.unnamed if keep(owner))
+        iface.lifecycle = iface.lifecycle or any(keep(owner) for owner in part.lifecycle)
+        for decl, owner in part.parameters:
+            if keep(owner):
+                mine = iface.parameters.setdefault(decl.name, dataclasses.replace(decl))  # type: ignore[union-attr]
+                if decl.read_only:
+                    mine.read_only = True
     return iface
 
 
-CACHE_KIND = "cpp-interface"  # the disk cache's kind for what one file declares
+CACHE_KIND = "cpp-facts-3"  # the disk cache's kind for what one file declares (3: filter members)
 
 
 @functools.lru_cache(maxsize=1024)
-def _file_interface(path: str, text: str, cache: Any = None) -> NodeInterface:
+def _file_interface(path: str, text: str, cache: Any = None) -> CppFacts:
     """What one file contributes, once per file (callers copy from it, never change it): a
     package's executables share sources (2,195 extractions of 601 files on the real-world corpus).
 
     A pure function of the path (spans name it) and the text: with a ``cache``, read from disk when
     this text was seen before. Files without a call word are not stored (the check is cheaper than
     a lookup), nor is what a failed extraction left."""
-    part = _interface()
+    part = CppFacts()
     if not _CALL_WORDS.search(text):
         return part
     key = cache.key(CACHE_KIND, path, text) if cache is not None else None
     if key is not None:
         hit = cache.get(key)
-        if type(hit) is NodeInterface:
+        if type(hit) is CppFacts:
             return hit
     try:
         _extract_one(path, text, part)
@@ -578,11 +602,12 @@ def _descriptor_read_only(arg: list[Tok], names: set[str]) -> bool:
     return False
 
 
-# Every call _extract_one looks for names one of these; a file without any has nothing to give
-# (two thirds of the C++ files of a workspace), and tokenizing it is most of the cost.
-_CALL_WORDS = re.compile(r"create_(?:publisher|subscription|service|client|server)|advertise|subscribe"
-                         r"|declare_(?:parameter|or_get_parameter)|Transform(?:Listener|Broadcaster)"
-                         r"|LifecycleNode")
+# Every call _extract_one looks for names one of these (a message_filters subscriber's class is
+# ``message_filters::Subscriber``); a file without any has nothing to give (two thirds of the C++
+# files of a workspace), and tokenizing it is most of the cost.
+_WORDS = (r"create_(?:publisher|subscription|service|client|server)|advertise|subscribe"
+          r"|declare_(?:parameter|or_get_parameter)|Transform(?:Listener|Broadcaster)|LifecycleNode")
+_CALL_WORDS = re.compile(_WORDS + "|message_filters")
 _TF_ENDPOINTS = {
     "TransformListener": (("subscribers", "/tf"), ("subscribers", "/tf_static")),
     "TransformBroadcaster": (("publishers", "/tf"),),
@@ -594,7 +619,7 @@ _TF_ENDPOINTS = {
 _LOOP_NAMES = frozenset(_TF_ENDPOINTS) | frozenset(_ENDPOINT_CALLS) | {
     "create_server", "advertise", "subscribe", "advertiseCamera", "subscribeCamera",
     "declare_parameter", "declare_parameter_if_not_declared", "declare_or_get_parameter",
-    "LifecycleNode"}
+    "LifecycleNode", "Subscriber", "SubscriberFilter"}
 # The namespaces of the lifecycle node classes a node's class derives from (nav2's own wrapper:
 # nav2_util up to jazzy, nav2 after), and the tokens a base class or a constructor's initialiser
 # names one after, or ``make_shared<...>`` makes one with.
@@ -622,8 +647,9 @@ _RAW_PREFIXES = frozenset(p for p in _STR_PREFIX if p.endswith("R"))
 # a part of every word an anchor can be (_LOOP_NAMES and read_only); the identifier around it
 # decides. (No look-around, nor optional prefixes: either costs the regex its fast scan for the
 # first character, three times the time.)
-_ANCHOR = re.compile(_CALL_WORDS.pattern + "|read_only")
+_ANCHOR = re.compile(_WORDS + "|read_only|Subscriber")
 _ANCHOR_WORDS = _LOOP_NAMES | {"read_only"}
+_FOUR_BEFORE = frozenset({"LifecycleNode", "Subscriber", "SubscriberFilter"})
 
 
 _DIGITS = frozenset("0123456789")
@@ -652,10 +678,18 @@ class _Whole:
     def __init__(self, text: str) -> None:
         self.toks = tokenize(text)
 
-    def anchors(self) -> list[tuple[list[Tok], int]]:
+    def anchors(self) -> list[tuple[list[Tok], int, int]]:
         toks = self.toks
         # only the identifiers extraction acts on (a comprehension over the list, not a loop)
-        return [(toks, i) for i, t in enumerate(toks) if t[1] in _LOOP_NAMES and t[0] == "id"]
+        return [(toks, i, -1) for i, t in enumerate(toks) if t[1] in _LOOP_NAMES and t[0] == "id"]
+
+    def uses(self, name: str) -> list[tuple[list[Tok], int, int]]:
+        """Where the identifier ``name`` is (a message_filters member's name)."""
+        toks = self.toks
+        return [(toks, i, -1) for i, t in enumerate(toks) if t[1] == name and t[0] == "id"]
+
+    def classes(self) -> list[tuple[str | None, int, int]]:
+        return []  # (offsets are not known: nothing is attributed to a class)
 
     def constants(self) -> dict[str, str]:
         return _constants(self.toks)
@@ -783,11 +817,12 @@ class _Windows:
             k = text.find(";", self.ends[bisect.bisect_right(self.starts, k) - 1])
         return len(self.text) if k < 0 else k + 1
 
-    def _window(self, p: int, name: str) -> tuple[list[Tok], int] | None:
+    def _window(self, p: int, name: str, calls: bool = True) -> tuple[list[Tok], int] | None:
         """The tokens from a line start with at least two tokens (four before a
-        ``LifecycleNode``) before offset ``p`` to the end of its statement, and the index of the
-        token at ``p``."""
-        before = 4 if name == "LifecycleNode" else 2
+        ``LifecycleNode`` or a message_filters ``Subscriber``: ``make_shared<ns::Subscriber``)
+        before offset ``p`` to the end of its statement (past a lambda's body in a call, unless
+        not ``calls``), and the index of the token at ``p``."""
+        before = 4 if name in _FOUR_BEFORE else 2
         end = self._statement_end(p)
         ls = self._line_start(p)
         for _ in range(8):  # a line back at a time, while fewer than ``before`` tokens come first
@@ -802,20 +837,45 @@ class _Windows:
             ls = self._line_start(ls - 1)
         # Extraction reads up to the ";" that ends the call: past a ";" inside braces opened
         # after the word (a lambda's body), as ``_call_args`` does, up to its limit.
-        while end < len(self.text) and len(toks) < i + 4400 and _brace_open(toks, i):
+        stack: list[str] = []  # (the brackets open after the word in the tokens scanned so far)
+        scanned = i + 1
+        while calls and end < len(self.text) and len(toks) < i + 4400:
+            brace_open, scanned = _brace_open(toks, scanned, stack)
+            if not brace_open:
+                break
             start, end = end, self._statement_end(end)
             ls = self.text.rfind("\n", 0, start) + 1
             toks += tokenize(self.text, start, end, self._line_of(ls), ls)
         return toks, i
 
-    def anchors(self) -> list[tuple[list[Tok], int]]:
+    def anchors(self) -> list[tuple[list[Tok], int, int]]:
+        """(tokens, index of the word, its offset) per anchor."""
         out = []
         for p, name in self.words:
             if name != "read_only":
-                win = self._window(p, name)
+                win = self._window(p, name, name not in _FILTER_CLASSES)
                 if win is not None:
-                    out.append(win)
+                    out.append((*win, p))
         return out
+
+    def uses(self, name: str) -> list[tuple[list[Tok], int, int]]:
+        """Where the identifier ``name`` is, outside comments and strings (a message_filters
+        member's name: its initialiser ``name_(node, "topic")``)."""
+        out = []
+        text = self.text
+        # (only a name a call's or a brace's arguments follow)
+        for m in re.finditer(re.escape(name) + r"\s*[({]", text):
+            p = m.start()
+            if p and text[p - 1] in _IDCHARS or self._inside(p):
+                continue
+            win = self._window(p, name, False)  # (an initialiser's arguments end before its body)
+            if win is not None:
+                out.append((*win, p))
+        return out
+
+    def classes(self) -> list[tuple[str | None, int, int]]:
+        """The scopes at namespace level (``cpp_scopes.scopes``)."""
+        return scopes(self.text, self.starts, self.ends)
 
     def constants(self) -> _LazyConstants:
         return _LazyConstants(self)
@@ -885,19 +945,21 @@ class _LazyConstants:
         return next(iter(values)) if len(values) == 1 else None
 
 
-def _brace_open(toks: list[Tok], i: int) -> bool:
-    """Whether a "{" opened after ``toks[i]`` is still open at the end of ``toks`` (no bracket
-    opened before it closed first)."""
-    stack: list[str] = []
-    for t in toks[i + 1:]:
+def _brace_open(toks: list[Tok], start: int, stack: list[str]) -> tuple[bool, int]:
+    """Whether a "{" opened after the word is still open at the end of ``toks`` (no bracket
+    opened before the word closed first), going on from ``toks[start]`` with ``stack`` the
+    brackets open before it (updated); and where the next call goes on. (A window grows a
+    statement at a time; scanning it whole again each time took half of extraction's time.)"""
+    for k in range(start, len(toks)):
+        t = toks[k]
         if t[0] == "op":
             if t[1] in "([{":
                 stack.append(t[1])
             elif t[1] in ")]}":
                 if not stack:
-                    return False
+                    return False, len(toks)
                 stack.pop()
-    return "{" in stack
+    return "{" in stack, len(toks)
 
 
 def _constant_name_at(toks: list[Tok], j: int) -> int | None:
@@ -921,17 +983,59 @@ def _is_constant_name(toks: list[Tok], k: int) -> bool:
     return k >= 0 and toks[k].kind == "id" and toks[k].text not in ("return", "std", "string")
 
 
-def _extract_one(path: str, text: str, iface: NodeInterface) -> None:
+def _extract_one(path: str, text: str, facts: CppFacts) -> None:
     """Extract a file ``_file_interface`` found a call word in."""
-    _extract_from(path, _Windows.of(text) or _Whole(text), iface)
+    _extract_from(path, skim(text) or _Whole(text), facts)
 
 
-def _extract_from(path: str, view: _Whole | _Windows, iface: NodeInterface) -> None:
+@functools.lru_cache(maxsize=64)
+def skim(text: str) -> _Windows | None:
+    """``_Windows.of(text)``, for a while: telling which classes run in an executable reads again
+    the sources just extracted (``linked.py``)."""
+    return _Windows.of(text)
+
+
+class _Collector:
+    """Adds what extraction finds to a ``CppFacts``, each item with the class whose code holds
+    the word it was found at."""
+
+    def __init__(self, path: str, view: _Whole | _Windows, facts: CppFacts) -> None:
+        self.path, self.facts = path, facts
+        found = view.classes()
+        facts.classes = tuple((c, a, b) for c, a, b in found if c is not None)
+        self.scopes, self.firsts = found, [a for _, a, _ in found]
+        self.owner: str | None = None
+
+    def at(self, p: int) -> None:
+        """Items from here on are at offset ``p`` (-1: unknown)."""
+        self.owner = owner_at(self.scopes, self.firsts, p) if p >= 0 else None
+
+    def endpoint(self, kind: str, name: str | None, type_: str | None, tok: Tok | None) -> None:
+        if name is None:
+            self.facts.unnamed.append((kind, type_, self.owner))
+        else:
+            self.facts.endpoints.append((kind, Endpoint(name, type_, _span(self.path, tok)),
+                                         self.owner))
+
+    def parameter(self, decl: ParamDecl) -> None:
+        self.facts.parameters.append((decl, self.owner))
+
+    def lifecycle(self) -> None:
+        self.facts.lifecycle.append(self.owner)
+
+
+def _extract_from(path: str, view: _Whole | _Windows, facts: CppFacts) -> None:
     consts = view.constants()
     read_only = view.read_only()
-    for toks, i in view.anchors():
+    out = _Collector(path, view, facts)
+    anchors = view.anchors()
+    declared: set[tuple[int, int]] = set()  # where the declarations name them
+    filters = _filter_members(anchors, consts, out, declared)  # message_filters members -> type
+    facts.filters = filters
+    for toks, i, p in anchors:
         t = toks[i]
         name = t.text
+        out.at(p)
         prev = toks[i - 1].text if i > 0 else ""
         prev2 = toks[i - 2].text if i > 1 else ""
         if name == "LifecycleNode":
@@ -939,13 +1043,16 @@ def _extract_from(path: str, view: _Whole | _Windows, iface: NodeInterface) -> N
                     (i > 2 and toks[i - 3].text in _BASE_BEFORE and toks[i + 1].text in _BASE_AFTER)
                     or (i > 3 and toks[i - 3].text == "<" and toks[i - 4].text == "make_shared"
                         and toks[i + 1].text == ">")):
-                iface.lifecycle = True  # a lifecycle node's class
+                out.lifecycle()  # a lifecycle node's class
             continue
+        if name in _FILTER_CLASSES:
+            continue  # (``_filter_members`` read them)
         if name in _TF_ENDPOINTS and prev == "::" and prev2 == "tf2_ros":
             # tf2_ros' listener subscribes to (and its broadcasters publish on) the absolute /tf and
             # /tf_static: nodes using them honour a ("/tf", "tf") remap like any other topic.
             for kind, topic in _TF_ENDPOINTS[name]:
-                getattr(iface, kind).append(Endpoint(topic, "tf2_msgs/msg/TFMessage", _span(path, t)))
+                out.facts.endpoints.append(
+                    (kind, Endpoint(topic, "tf2_msgs/msg/TFMessage", _span(path, t)), out.owner))
             continue
         if name in _ENDPOINT_CALLS or name in ("create_server",):
             j = i + 1
@@ -961,40 +1068,34 @@ def _extract_from(path: str, view: _Whole | _Windows, iface: NodeInterface) -> N
                 if len(args) >= 2:
                     n, tok = _name_of(args[1], consts)
                     kind = "action_servers" if name == "create_server" else "action_clients"
-                    if n is not None:
-                        getattr(iface, kind).append(Endpoint(n, ros_type(targ), _span(path, tok)))
-                    else:
-                        iface.unnamed.append((kind, ros_type(targ)))
+                    out.endpoint(kind, n, ros_type(targ), tok)
                 continue
             if ns == "image_transport":
                 if len(args) >= 2 and name in ("create_publisher", "create_subscription"):
                     n, tok = _name_of(args[1], consts)
-                    kind = _ENDPOINT_CALLS[name]
-                    if n is not None:
-                        getattr(iface, kind).append(
-                            Endpoint(n, "sensor_msgs/msg/Image", _span(path, tok)))
-                    else:
-                        iface.unnamed.append((kind, "sensor_msgs/msg/Image"))
+                    out.endpoint(_ENDPOINT_CALLS[name], n, "sensor_msgs/msg/Image", tok)
                 continue
             if name == "create_server" or not args or targ is None:
                 continue
             n, tok = _name_of(args[0], consts)
-            if n is not None:
-                getattr(iface, _ENDPOINT_CALLS[name]).append(
-                    Endpoint(n, ros_type(targ), _span(path, tok)))
-            else:
-                iface.unnamed.append((_ENDPOINT_CALLS[name], ros_type(targ)))
+            out.endpoint(_ENDPOINT_CALLS[name], n, ros_type(targ), tok)
         elif name in ("advertise", "subscribe", "advertiseCamera", "subscribeCamera") and \
                 prev in (".", "->"):
             parsed = _call_args(toks, i + 1)
             if parsed is None or not parsed[0]:
                 continue
-            n, tok = _name_of(parsed[0][0], consts)
-            kind = "publishers" if name.startswith("advertise") else "subscribers"
-            if n is None:
-                iface.unnamed.append((kind, "sensor_msgs/msg/Image"))
+            args = parsed[0]
+            n, tok = _name_of(args[0], consts)
+            receiver = toks[i - 2].text if i > 1 and toks[i - 2].kind == "id" else ""
+            if name == "subscribe" and (receiver in filters or n is None and _filter_subscribe(
+                    args, consts)):
+                # message_filters' ``sub_.subscribe(node, "topic", qos)``, not image_transport's
+                # ``it.subscribe("topic", queue_size, callback)``
+                n, tok = _name_of(args[1], consts) if len(args) > 1 else (None, None)
+                out.endpoint("subscribers", n, filters.get(receiver), tok)
                 continue
-            getattr(iface, kind).append(Endpoint(n, "sensor_msgs/msg/Image", _span(path, tok)))
+            kind = "publishers" if name.startswith("advertise") else "subscribers"
+            out.endpoint(kind, n, "sensor_msgs/msg/Image", tok)
         elif name in ("declare_parameter", "declare_parameter_if_not_declared",
                       "declare_or_get_parameter"):
             j = i + 1
@@ -1021,6 +1122,150 @@ def _extract_from(path: str, view: _Whole | _Windows, iface: NodeInterface) -> N
                     ptype = dtype
             decl = ParamDecl(n, ptype, default, span=_span(path, tok), source=path,
                              has_default=has_default)
-            decl = iface.parameters.setdefault(n, decl)  # type: ignore[union-attr]
-            if len(args) > k + 2 and _descriptor_read_only(args[k + 2], read_only):
-                decl.read_only = True
+            decl.read_only = len(args) > k + 2 and _descriptor_read_only(args[k + 2], read_only)
+            out.parameter(decl)
+    for member in sorted(filters):
+        for toks, i, p in view.uses(member):
+            if (toks[i].line, toks[i].col) not in declared:
+                out.at(p)
+                _filter_initialiser(toks, i, filters[member], consts, out)
+
+
+# ---- message_filters ----------------------------------------------------------------------------
+# ``message_filters::Subscriber<T> sub_;`` subscribes when constructed with a node and a topic
+# (``sub_(node, "topic", qos)`` in a constructor's initialisers, ``make_shared<...>(node, "topic")``)
+# or told to (``sub_.subscribe(node, "topic", qos)``); image_transport's ``SubscriberFilter`` is
+# the same for images.
+
+_FILTER_CLASSES = {"Subscriber": "message_filters", "SubscriberFilter": "image_transport"}
+_MAKERS = frozenset({"make_shared", "make_unique"})
+_HOLDERS = frozenset({"shared_ptr", "unique_ptr"})
+
+
+@functools.lru_cache(maxsize=256)
+def member_initialisers(path: str, text: str, members: tuple[tuple[str, str | None], ...]
+                        ) -> CppFacts:
+    """The subscriptions a source's constructors make by initialising message_filters
+    ``members`` (name, message type) that another file (its header) declares:
+    ``odom_sub_(node, "odom/filtered", qos)``."""
+    facts = CppFacts()
+    try:
+        view = skim(text) or _Whole(text)
+        out = _Collector(path, view, facts)
+        consts = view.constants()
+        for member, type_ in members:
+            for toks, i, p in view.uses(member):
+                out.at(p)
+                _filter_initialiser(toks, i, type_, consts, out)
+    except (RecursionError, IndexError, ValueError):
+        pass  # what was found before the failure stays
+    facts.classes = ()  # (the source's own facts hold them)
+    return facts
+
+
+def _filter_members(anchors: list[tuple[list[Tok], int, int]], consts: _Constants,
+                    out: _Collector, declared: set[tuple[int, int]]) -> dict[str, str | None]:
+    """The members (and variables) declared as message_filters subscribers, with their message
+    types (and in ``declared`` where their declarations name them); records the subscriptions
+    constructed with a topic on the way."""
+    members: dict[str, str | None] = {}
+    for toks, i, p in anchors:
+        name = toks[i].text
+        if name not in _FILTER_CLASSES or i < 2 or toks[i - 1].text != "::" \
+                or toks[i - 2].text != _FILTER_CLASSES[name]:
+            continue
+        out.at(p)
+        j = i + 1
+        type_: str | None = "sensor_msgs/msg/Image" if name == "SubscriberFilter" else None
+        if name == "Subscriber":
+            if j >= len(toks) or toks[j].text != "<":
+                continue
+            targ, j = _template_args(toks, j)
+            type_ = ros_type(_first_template_arg(targ))
+        before = toks[i - 3].text if i > 2 else ""
+        if before == "<" and j < len(toks) and toks[j].text == ">":  # inside make_shared<...>
+            j += 1
+            maker = toks[i - 4].text if i > 3 else ""
+            if maker in _MAKERS:
+                _filter_construction(toks, j, type_, consts, out)
+                continue
+            if maker not in _HOLDERS:
+                continue
+        elif before == "new":
+            _filter_construction(toks, j, type_, consts, out)
+            continue
+        while j + 1 < len(toks) and toks[j].kind == "id":  # ``Subscriber<T> a_, b_{node, "t"};``
+            members[toks[j].text] = type_
+            declared.add((toks[j].line, toks[j].col))
+            _filter_construction(toks, j + 1, type_, consts, out)
+            j = _skip_initialiser(toks, j + 1)
+            if j >= len(toks) or toks[j].text != ",":
+                break
+            j += 1
+    return members
+
+
+def _filter_construction(toks: list[Tok], j: int, type_: str | None, consts: _Constants,
+                         out: _Collector) -> None:
+    """``(node, "topic", ...)`` or ``{node, "topic", ...}`` at ``toks[j]``: a subscription (with
+    fewer arguments, or a string first, it is something else: ``subscribe`` comes later). Not
+    past a ";" (a window of tokens ends there: a lambda's body is no topic anyway)."""
+    parsed = _call_args(toks, j, braces=True)
+    if parsed is not None and any(t.text == ";" for t in toks[j:parsed[1]]):
+        return
+    if parsed is not None and len(parsed[0]) >= 2 and not _is_string(parsed[0][0]):
+        n, tok = _name_of(parsed[0][1], consts)
+        out.endpoint("subscribers", n, type_, tok)
+
+
+def _filter_initialiser(toks: list[Tok], i: int, type_: str | None, consts: _Constants,
+                        out: _Collector) -> None:
+    """``member_(node, "topic", ...)`` in a constructor's initialisers."""
+    if i and toks[i - 1].text in (":", ","):
+        _filter_construction(toks, i + 1, type_, consts, out)
+
+
+def _skip_initialiser(toks: list[Tok], j: int) -> int:
+    """The index of the "," after a declarator's initialiser (``(...)``, ``{...}``, ``= ...``)
+    at ``j``, or of the ";" that ends the statement (a window of tokens ends there)."""
+    depth = 0
+    while j < len(toks):
+        t = toks[j].text
+        if t in "({[":
+            depth += 1
+        elif t in ")}]":
+            depth -= 1
+        elif t == ";" or depth == 0 and t == ",":
+            return j
+        j += 1
+    return j
+
+
+def _filter_subscribe(args: list[list[Tok]], consts: _Constants) -> bool:
+    """Whether ``x.subscribe(args)`` is message_filters' (a node first, the topic second) rather
+    than image_transport's (the topic first, then a queue size)."""
+    first = args[0]
+    if any(t.kind == "id" and (t.text == "this" or "node" in t.text.lower()
+                               or t.text == "shared_from_this") for t in first):
+        return True
+    return len(args) > 1 and _name_of(args[1], consts)[0] is not None
+
+
+def _is_string(arg: list[Tok]) -> bool:
+    return len(arg) == 1 and arg[0].kind == "str"
+
+
+def _first_template_arg(targ: str | None) -> str | None:
+    """``A, B<C, D>`` -> ``A``."""
+    if targ is None:
+        return None
+    depth = 0
+    for k, c in enumerate(targ):
+        if c == "<":
+            depth += 1
+        elif c == ">":
+            depth -= 1
+        elif c == "," and depth == 0:
+            return targ[:k]
+    return targ
+

@@ -20,10 +20,10 @@ import yaml
 from physai_lint.model.findings import Diagnostic
 from physai_lint.model.span import Span
 
-from .extract_cpp import extract_cpp
 from .extract_py import extract_py
 from .gpl import _span as node_span
 from .gpl import compose, normalize_type, parse_gpl, to_python
+from .linked import extract_linked
 from .model import ENDPOINT_KINDS, Endpoint, NodeInterface, ParamDecl
 
 
@@ -33,6 +33,7 @@ class PackageIndexLike(Protocol):
 
 
 Key = tuple[str, str]
+_CPP = (".cpp", ".cc", ".cxx", ".hpp", ".h", ".hh")
 
 
 def _schemas_dir() -> Path | None:
@@ -264,13 +265,18 @@ class InterfaceStore:
         self._cache: dict[Key, NodeInterface | None] = {}
         self._extracted: dict[Key, NodeInterface] = {}
 
-    def add_extracted(self, package: str, executable: str, files: list[tuple[str, str]]) -> None:
-        """Give the store the sources of an executable (the caller knows which files build it)."""
-        cpp = [(p, t) for p, t in files if p.endswith((".cpp", ".cc", ".cxx", ".hpp", ".h", ".hh"))]
+    def add_extracted(self, package: str, executable: str, files: list[tuple[str, str]],
+                      library: list[tuple[str, str]] | None = None,
+                      roots: list[str] | None = None) -> None:
+        """Give the store the sources of an executable (the caller knows which files build it):
+        its own ``files``, and the ``library`` sources a library it links brings, of which only
+        the classes its own code names (or the ``roots``: a component's plugin class) run."""
+        cpp = [(p, t) for p, t in files if p.endswith(_CPP)]
+        lib = [(p, t) for p, t in library or () if p.endswith(_CPP)]
         py = [(p, t) for p, t in files if p.endswith(".py")]
         layers = []
-        if cpp:
-            layers.append(extract_cpp(cpp, self.cache))
+        if cpp or lib:
+            layers.append(extract_linked(cpp, lib, list(roots or ()), self.cache, self._read))
         if py:
             layers.append(extract_py(py))
         merged = merge(layers) if layers else None
@@ -305,24 +311,34 @@ class InterfaceStore:
             iface.parameter_patterns.extend(patterns)
         return iface
 
+    def _read(self, path: str) -> str | None:
+        reader = getattr(self.packages, "read_text", None)
+        return None if reader is None else reader(path)
+
     def _sources(self, package: str, executable: str) -> None:
         if (package, executable) in self._extracted:
             return
+        parts = getattr(self.packages, "source_parts_for", None)
         fn = getattr(self.packages, "source_files_for", None)
         reader = getattr(self.packages, "read_text", None)
-        if fn is None or reader is None:
+        if (fn is None and parts is None) or reader is None:
             return
         try:
-            paths = list(fn(package, executable) or [])
+            if parts is not None:
+                own, library, roots = parts(package, executable)
+            else:
+                own, library, roots = list(fn(package, executable) or []), [], []  # type: ignore[misc]
         except Exception:  # noqa: BLE001
             return
-        files = []
-        for p in paths[:500]:
+        files: list[tuple[str, str]] = []
+        lib: list[tuple[str, str]] = []
+        from_library = set(library)
+        for p in (list(own) + list(library))[:500]:
             t = reader(p)
             if t is not None:
-                files.append((p, t))
-        if files:
-            self.add_extracted(package, executable, files)
+                (lib if p in from_library else files).append((p, t))
+        if files or lib:
+            self.add_extracted(package, executable, files, lib, roots)
 
     def get(self, package: str | None, executable: str | None) -> NodeInterface | None:
         if not package or not executable:

@@ -42,6 +42,11 @@ class BuildInfo:
     parameter_yamls: dict[str, list[str]] = field(default_factory=dict)
     # executable or plugin -> its source files (absolute paths), for parameter extraction
     sources: dict[str, list[str]] = field(default_factory=dict)
+    # executable or plugin -> those of its sources that a library it links brings (for a plugin:
+    # all of them): only the classes its own code names run from them
+    library_sources: dict[str, list[str]] = field(default_factory=dict)
+    # executable or plugin -> the classes known to run in it (a component's plugin class)
+    source_roots: dict[str, list[str]] = field(default_factory=dict)
     # generate_parameter_module: (module name, yaml absolute path)
     parameter_modules: list[tuple[str, str]] = field(default_factory=list)
     python_packages: set[str] = field(default_factory=set)

@@ -45,6 +45,7 @@ class _Interp:
         self.param_libs: dict[str, str | None] = {}
         self.target_sources: dict[str, list[str]] = {}
         self.plugin_targets: dict[str, str] = {}
+        self.exe_plugins: dict[str, str] = {}  # rclcpp_components_register_node EXECUTABLE -> PLUGIN
         self.output_names: dict[str, dict[str, str]] = {}  # target -> its _RENAMING properties
         self.installed_targets: set[str] = set()  # executable targets installed to lib/<pkg>
         self.subdirs = 0
@@ -188,6 +189,10 @@ class _Interp:
                 self.record_sources(a)
         elif name == "target_sources":
             self.record_sources(self.args(cmd))
+        elif name in _TEST_EXECUTABLES:
+            a = self.args(cmd)
+            if a:
+                self.record_sources(a)  # (installed with install(TARGETS), a launch may run one)
         elif name == "set_target_properties":
             a = self.args(cmd)
             if "PROPERTIES" in a:
@@ -237,6 +242,8 @@ class _Interp:
                 self.installed_targets.add(exe)  # the macro adds and installs target ``exe``
                 self.exes.add(exe)
                 self.links.setdefault(exe, set()).add(a[0])
+                if plugin and UNKNOWN not in plugin:
+                    self.exe_plugins[exe] = plugin  # its generated main() runs that class alone
         elif name == "rclcpp_components_register_nodes":
             a = self.args(cmd)
             if a:
@@ -468,14 +475,24 @@ class _Interp:
                 stack.extend(sorted(x for x in self.links.get(t, ()) if x in self.libs))
             return out
 
+        # A library may hold several node classes; only those an executable's own code names (or
+        # the plugin class a component runs) are its own: interfaces/linked.py sorts them out.
         for exe, target in sorted(target_of.items()):
             srcs = sources(target)
             if srcs:
                 self.info.sources[exe] = srcs
+                own_srcs = self.target_sources.get(target, [])
+                linked = [p for p in srcs if p not in own_srcs]
+                if linked:
+                    self.info.library_sources[exe] = linked
+                if target in self.exe_plugins:
+                    self.info.source_roots[exe] = [self.exe_plugins[target]]
         for plugin, target in sorted(self.plugin_targets.items()):
             srcs = sources(target)
             if srcs:
                 self.info.sources[plugin] = srcs
+                self.info.library_sources[plugin] = list(srcs)
+                self.info.source_roots[plugin] = [plugin]
         for exe, target in sorted(target_of.items()):
             ys = reach(target)
             if ys:
@@ -487,6 +504,9 @@ class _Interp:
                 self.info.parameter_yamls[plugin] = sorted({y for y in ys if y})
 
 
+# ament_cmake_gtest / ament_cmake_gmock commands that add an executable target from sources.
+_TEST_EXECUTABLES = frozenset({"ament_add_gtest", "ament_add_gtest_executable", "ament_add_gmock",
+                               "ament_add_gmock_executable"})
 # Target properties that name the file an executable target builds.
 _RENAMING = ("OUTPUT_NAME", "RUNTIME_OUTPUT_NAME", "PREFIX", "SUFFIX")
 

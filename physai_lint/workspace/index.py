@@ -58,6 +58,9 @@ class WorkspacePackage:
     valid: bool = True  # False when catkin_pkg rejected package.xml
     dirs: frozenset[str] = field(default_factory=frozenset)
     sources: dict[str, tuple[str, ...]] = field(default_factory=dict)  # executable -> sources
+    # executable -> those of its sources a linked library brings; -> classes known to run in it
+    library_sources: dict[str, tuple[str, ...]] = field(default_factory=dict)
+    source_roots: dict[str, tuple[str, ...]] = field(default_factory=dict)
     scripts_dir: str | None = None  # setup.cfg's script_dir when it is not lib/<name>
 
 
@@ -235,6 +238,17 @@ class PackageIndex:
         if pkg is None:
             return []
         return list(pkg.sources.get(executable, ()))
+
+    def source_parts_for(self, package: str, executable: str
+                         ) -> tuple[list[str], list[str], list[str]]:
+        """``source_files_for`` split: (the executable's own sources, those a library it links
+        brings, the classes known to run in it: a component's plugin class)."""
+        pkg = self.packages.get(package)
+        if pkg is None:
+            return [], [], []
+        library = pkg.library_sources.get(executable, ())
+        own = [p for p in pkg.sources.get(executable, ()) if p not in library]
+        return own, list(library), list(pkg.source_roots.get(executable, ()))
 
     # ---- install space -------------------------------------------------------------------------
 
@@ -734,7 +748,7 @@ def _read_cmake(index: PackageIndex, pkg_dir: str, name: str, text: str | None) 
     cache = index.cache
     if cache is None or text is None:
         return read_cmake_package(pkg_dir, name, text)
-    key = cache.key("cmake", pkg_dir + "/CMakeLists.txt", text, name)
+    key = cache.key("cmake-2", pkg_dir + "/CMakeLists.txt", text, name)  # 2: library sources
     hit = cache.get(key)
     if (isinstance(hit, tuple) and len(hit) == 2 and type(hit[0]) is BuildInfo
             and all(_digest(read_listfile(p)) == d for p, d in hit[1])):
@@ -791,6 +805,8 @@ def _read_package(index: PackageIndex, pkg_dir: str) -> WorkspacePackage | None:
         parameter_yamls={k: tuple(v) for k, v in sorted(info.parameter_yamls.items())},
         parameter_modules=tuple(info.parameter_modules),
         sources={k: tuple(v) for k, v in sorted(info.sources.items())},
+        library_sources={k: tuple(v) for k, v in sorted(info.library_sources.items())},
+        source_roots={k: tuple(v) for k, v in sorted(info.source_roots.items())},
         files=files,
         dirs=dirs,
         install_complete=info.complete,

@@ -8,15 +8,23 @@ from hypothesis import strategies as st
 from test_cpp_tokenize_equivalence import SNIPPETS  # (this folder is on the path)
 
 from physai_lint.interfaces import extract_cpp
-from physai_lint.interfaces.extract_cpp import _extract_from, _interface, _Whole, _Windows
+from physai_lint.interfaces.cpp_scopes import CppFacts
+from physai_lint.interfaces.extract_cpp import _extract_from, _Whole, _Windows
 
 
 def _both(text: str) -> tuple[object, object]:
-    whole, windows = _interface(), _interface()
+    whole, windows = CppFacts(), CppFacts()
     _extract_from("src/a.cpp", _Whole(text), whole)
     view = _Windows.of(text)
     _extract_from("src/a.cpp", view if view is not None else _Whole(text), windows)
-    return whole, windows
+    return _found(whole), _found(windows)
+
+
+def _found(facts: CppFacts) -> dict[str, list[object]]:
+    """What was found, without the classes holding it (only windows know where words are)."""
+    return {"endpoints": [(kind, e) for kind, e, _ in facts.endpoints],
+            "unnamed": [(kind, t) for kind, t, _ in facts.unnamed],
+            "parameters": [d for d, _ in facts.parameters], "lifecycle": [len(facts.lifecycle)]}
 
 
 def _same(text: str) -> None:
@@ -55,6 +63,10 @@ CALLS = [
     ('s = create_subscription<a::msg::B>("lam", 1, [this](B m) {\n  f(m); if (x) { g(); }\n  for (;;) {}\n});'),
     'void Foo::subscribe() {\n  a(); b();\n}\nnamespace { int k; }',
     'create_service<a::srv::B>("s", [](){ return; }',
+    ('#include <message_filters/subscriber.h>\nFoo::Foo() : Node("f"),\n  odom_(this, "odom"), n_{1}\n'
+     '{ sub_.subscribe(this, "scan", qos); }\nmessage_filters::Subscriber<a::msg::B> odom_, b_{this, "b"};'),
+    ('x_ = std::make_shared<message_filters::\nSubscriber<a::msg::B, rclcpp::Node>>(node, kTopic);\n'
+     'y_ = new message_filters::Subscriber<a::msg::C>(node, "c"); f(message_filters::Subscriber<a::msg::D> & d) {}'),
 ]
 
 
@@ -67,7 +79,8 @@ def test_windows_on_all_calls_together() -> None:
     text = "\n".join(CALLS)
     whole, windows = _both(text)
     assert windows == whole
-    assert len(whole.publishers) >= 4 and len(whole.parameters) >= 5  # the cases do extract
+    publishers = [e for kind, e in whole["endpoints"] if kind == "publishers"]  # type: ignore[index]
+    assert len(publishers) >= 4 and len(whole["parameters"]) >= 5  # type: ignore[index]
 
 
 def test_a_char_literal_with_a_newline_falls_back_to_every_token() -> None:
@@ -88,7 +101,8 @@ _PIECES = CALLS + [
     ".", ",", "=", "[", "]", "R", "u8", "L", "1'0", "x", "true", "read_only", "kTopic", "d",
     "create_publisher", "declare_parameter", "advertise", "tf2_ros", "TransformListener", "é",
     '"x", 1);', "<a::msg::B>", 'k = "v";', 'k[] = "v";', 'k{"v"}', "(k, 1)", "1.e5", "1.f", ".5",
-    "0x1'F", "1e+", "[](){ f(); }", "{ x; }"]
+    "0x1'F", "1e+", "[](){ f(); }", "{ x; }", "message_filters::Subscriber<a::msg::B> m_", "m_(this, ",
+    "m_{node, ", "m_.subscribe(", "Foo::Foo() : "]
 
 
 @settings(max_examples=2000, deadline=None)

@@ -214,3 +214,32 @@ set_property(TARGET node APPEND PROPERTY OUTPUT_NAME y)
 install(TARGETS node DESTINATION lib/${PROJECT_NAME})
 """)
     assert info.executables == set() and not info.executables_complete
+
+
+def test_cmake_tells_an_executables_own_sources_from_its_libraries(tmp_path):
+    info = _cmake(tmp_path, """
+project(pkg)
+add_library(core src/filter.cpp src/gps.cpp)
+add_executable(filter_node src/filter_node.cpp)
+target_link_libraries(filter_node core)
+add_library(procs SHARED src/rectify.cpp)
+target_link_libraries(procs core)
+rclcpp_components_register_node(procs PLUGIN "pkg::Rectify" EXECUTABLE rectify_node)
+ament_add_gtest_executable(test_filter test/test_filter.cpp)
+target_link_libraries(test_filter core)
+install(TARGETS filter_node test_filter DESTINATION lib/${PROJECT_NAME})
+""")
+    def names(paths):
+        return [p.rsplit("/", 1)[-1] for p in paths]
+
+    assert {k: names(v) for k, v in info.sources.items()} == {
+        "filter_node": ["filter_node.cpp", "filter.cpp", "gps.cpp"],
+        "rectify_node": ["rectify.cpp", "filter.cpp", "gps.cpp"],
+        "pkg::Rectify": ["rectify.cpp", "filter.cpp", "gps.cpp"],
+        "test_filter": ["test_filter.cpp", "filter.cpp", "gps.cpp"]}
+    # what a linked library brings (for a component: all), and the class known to run
+    assert {k: names(v) for k, v in info.library_sources.items()} == {
+        "filter_node": ["filter.cpp", "gps.cpp"], "test_filter": ["filter.cpp", "gps.cpp"],
+        "rectify_node": ["rectify.cpp", "filter.cpp", "gps.cpp"],
+        "pkg::Rectify": ["rectify.cpp", "filter.cpp", "gps.cpp"]}
+    assert info.source_roots == {"rectify_node": ["pkg::Rectify"], "pkg::Rectify": ["pkg::Rectify"]}

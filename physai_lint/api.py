@@ -26,14 +26,13 @@ def _project(opts: CheckOptions, entry: str) -> tuple[Project, LaunchResult]:
     for launch in project.launches:
         if launch.entry == entry_abs:
             return project, launch
-    raise UsageError(not_a_launch_file(project, entry))
+    raise UsageError(not_a_launch_file(project, entry_abs))
 
 
-def not_a_launch_file(project: Project, entry: str) -> str:
-    """Why ``entry``, named on the command line, has no launch to show."""
+def not_a_launch_file(project: Project, target: str) -> str:
+    """Why ``target`` (absolute), named on the command line, has no launch to show."""
     from physai_lint.report import rel
 
-    target = os.path.normpath(os.path.join(project.cwd, entry)).replace(os.sep, "/")
     reason = next((why for path, why in project.skipped if path == target),
                   "a parameter file" if target in project.param_files else "")
     return f'"{rel(target, project.cwd)}" is not a launch file' + (f": {reason}" if reason else "")

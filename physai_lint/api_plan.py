@@ -23,7 +23,7 @@ def compute_plan(opts: CheckOptions, entry: str, cwd: str | None = None) -> tupl
         if not project.launches:
             from physai_lint.api import not_a_launch_file
 
-            raise UsageError(not_a_launch_file(project, entry))
+            raise UsageError(not_a_launch_file(project, target))
         launch = project.launches[0]
     graph = build_graph(launch, project.interfaces)
     cache: dict[int, Any] = {}

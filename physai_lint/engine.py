@@ -151,7 +151,8 @@ def build_project(opts: CheckOptions, cwd: str | None = None, progress: Any = No
             targets.update(r.files)
             targets.update(_param_sources(r))
     param_models = _load_params(store, sorted(set(found.param_files) | _all_param_sources(launches)),
-                                opts.distro, diagnostics, _pyyaml_read(launches))
+                                opts.distro, diagnostics,
+                                set().union(*(_param_sources(r, True) for r in launches)))
     diagnostics.extend(iface_diags)
     # Packages are read when first asked for; the checked ones are read here, for their problems.
     if hasattr(packages, "read_packages_holding"):
@@ -191,25 +192,20 @@ def _sort_out(store: FileStore, found: Any) -> list[tuple[str, str]]:
     return skipped
 
 
-def _param_sources(r: Any) -> set[str]:
-    """Workspace parameter files that the nodes of a launch load (and that exist after install)."""
-    return {s.source for n in r.nodes for s in n.param_sources
-            if getattr(s, "status", None) == "ok" and getattr(s, "source", None)}
+def _param_sources(r: Any, composable_only: bool = False) -> set[str]:
+    """Workspace parameter files that the nodes of a launch load (and that exist after install);
+    ``composable_only``: those of its composable nodes, which launch_ros reads with PyYAML (rcl
+    reads a node's through --params-file)."""
+    return {s.source for n in r.nodes if not composable_only or n.kind == "composable_node"
+            for s in n.param_sources if getattr(s, "status", None) == "ok" and getattr(s, "source", None)}
 
 
 def _all_param_sources(launches: list[Any]) -> set[str]:
     return set().union(*(_param_sources(r) for r in launches)) if launches else set()
 
 
-def _pyyaml_read(launches: list[Any]) -> set[str]:
-    """Parameter files launch_ros reads with PyYAML: those of composable nodes (rcl reads a
-    node's through --params-file)."""
-    return {s.source for r in launches for n in r.nodes if n.kind == "composable_node"
-            for s in n.param_sources if getattr(s, "status", None) == "ok" and getattr(s, "source", None)}
-
-
 def _load_params(store: FileStore, paths: list[str], distro: str, sink: list[Diagnostic],
-                 pyyaml_read: frozenset[str] | set[str] = frozenset()) -> dict[str, Any]:
+                 pyyaml_read: set[str]) -> dict[str, Any]:
     models: dict[str, Any] = {}
     for path in paths:
         model = store.param_file(path, distro)
@@ -219,7 +215,7 @@ def _load_params(store: FileStore, paths: list[str], distro: str, sink: list[Dia
         # P1xx structure findings are reported by their rules (checks/param_files.py).
         sink.extend(d for d in model.diagnostics if not d.code.startswith("P"))
         if path in pyyaml_read:  # a repeated node key loses its first block only there
-            sink.extend(getattr(model, "merged_keys", ()))
+            sink.extend(model.merged_keys)
     sink.extend(store.param_diagnostics)  # parser crashes (X003)
     store.param_diagnostics.clear()
     return models

@@ -16,7 +16,7 @@ from typing import Any
 from physai_lint.model.findings import Diagnostic
 from physai_lint.model.launch import LaunchFile
 from physai_lint.model.span import Span
-from physai_lint.sniff import is_fallback_python, launch_format
+from physai_lint.sniff import format_by_name, launch_format
 
 MAX_FILE_BYTES = 64 * 1024 * 1024
 
@@ -255,7 +255,6 @@ def parse_launch_text(path: str, text: str, reader: Callable[[str], str | None],
                       sink: list[Diagnostic], distro: str = "") -> LaunchFile | None:
     """Parse a launch file with the frontend ``ros2 launch`` would load it with (by extension, else
     by its text: ``sniff.launch_format``); its diagnostics go to ``sink``."""
-    fmt = launch_format(path, text)
     if len(text) > MAX_LAUNCH_CHARS:
         sink.append(Diagnostic(
             "X002", Span.whole_file(path),
@@ -263,6 +262,7 @@ def parse_launch_text(path: str, text: str, reader: Callable[[str], str | None],
             f"limit for launch files",
             help="split the launch file, or exclude it from the check", key="file is too large"))
         return None
+    fmt = launch_format(path, text)
     try:
         if fmt == "python":
             from physai_lint.frontends.python import parse_python_launch
@@ -284,7 +284,7 @@ def parse_launch_text(path: str, text: str, reader: Callable[[str], str | None],
     except Exception as exc:  # a crash is a bug and a finding, never a traceback
         sink.append(internal_error(path, f"{fmt} frontend", exc))
         return None
-    if fmt == "python" and res.launch is None and is_fallback_python(path, text):
+    if fmt == "python" and res.launch is None and format_by_name(path) is None:  # Python as the last resort
         sink.extend(_no_loader(path, d) if d.code == "X001" else d for d in res.diagnostics)
     else:
         sink.extend(res.diagnostics)

@@ -78,11 +78,6 @@ def launch_format(path: str, text: str | None = None) -> Format | None:
     return format_by_text(text) or "python"
 
 
-def is_fallback_python(path: str, text: str) -> bool:
-    """Loaded as Python only because neither frontend parser can take it."""
-    return format_by_name(path) is None and format_by_text(text) is None
-
-
 def xml_root(text: str) -> str | None:
     """The tag of the first element, past the XML declaration, comments and a DOCTYPE."""
     pos = 1 if text.startswith("\ufeff") else 0

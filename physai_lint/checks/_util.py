@@ -32,6 +32,12 @@ def run_memo(store: dict[Any, Any], key: Any, owner: object, build: Any) -> Any:
     return found[1]
 
 
+def switched_off_by(node: NodeInstance, value: str | None) -> bool:
+    """``value`` is empty and the node not certainly started: "" is how an argument switches a node
+    off, so with a value that starts it the remap or file would be another (N105, P101)."""
+    return not (value or "").strip() and node.active is not True
+
+
 def all_nodes(ctx: CheckContext, include_inactive: bool = True) -> Iterator[tuple[LaunchResult, NodeInstance]]:
     """Every node instance of every resolved launch, deduplicated by source position and fqn.
     Listed once per run: a dozen rules ask, and hashing every node's key was a tenth of the rules'

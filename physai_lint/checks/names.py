@@ -6,7 +6,7 @@ import re
 from collections.abc import Iterator
 from typing import Any
 
-from physai_lint.checks._util import all_nodes, relpath
+from physai_lint.checks._util import all_nodes, relpath, switched_off_by
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.checks.topics import graphs
 from physai_lint.model.findings import Diagnostic, Related
@@ -187,8 +187,8 @@ def invalid_remap(ctx: CheckContext) -> Iterator[Diagnostic]:
             for side, value in (("from", rule_.src), ("to", rule_.dst)):
                 if value is None or value.startswith("__") or (rule_.span, side) in seen:
                     continue
-                if not value and node.active is not True:
-                    continue  # "" is how an argument switches the node off: with another value it runs
+                if switched_off_by(node, value):
+                    continue
                 reason = _remap_problem(value)
                 if reason:
                     seen.add((rule_.span, side))

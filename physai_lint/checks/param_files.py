@@ -6,7 +6,7 @@ import os
 from collections.abc import Iterator
 from typing import Any
 
-from physai_lint.checks._util import all_nodes, where
+from physai_lint.checks._util import all_nodes, switched_off_by, where
 from physai_lint.checks._util import relpath as _rel
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic, Related
@@ -19,8 +19,8 @@ def missing(ctx: CheckContext) -> Iterator[Diagnostic]:
     for _, node in all_nodes(ctx):
         for src in node.param_sources:
             if isinstance(src, ResolvedParamFile) and src.status == "missing" and src.span not in seen:
-                if node.active is not True and not (src.path or "").strip():
-                    continue  # "" is how an argument switches the node off: with another value it runs
+                if switched_off_by(node, src.path):
+                    continue
                 seen.add(src.span)
                 what = ("is empty" if not (src.path or "").strip()
                         else "is a directory" if src.source and os.path.isdir(src.source) else "does not exist")

@@ -27,6 +27,7 @@ from typing import Any, NamedTuple, Protocol
 from physai_lint.model.span import Span
 
 from .cpp_scopes import CppFacts, owner_at, scopes
+from .cpp_scopes import _inside as _in_skimmed
 from .model import Endpoint, NodeInterface, ParamDecl
 
 MAX_SOURCE = 2_000_000
@@ -772,8 +773,7 @@ class _Windows:
 
     def _inside(self, p: int) -> bool:
         """Whether offset ``p`` is in a comment, string, char or preprocessor line."""
-        k = bisect.bisect_right(self.starts, p) - 1
-        return k >= 0 and p < self.ends[k]
+        return _in_skimmed(p, self.starts, self.ends)
 
     def _first_token(self, p: int) -> bool:
         """Whether no token comes before offset ``p``: only blanks, comments and preprocessor
@@ -1051,8 +1051,7 @@ def _extract_from(path: str, view: _Whole | _Windows, facts: CppFacts) -> None:
             # tf2_ros' listener subscribes to (and its broadcasters publish on) the absolute /tf and
             # /tf_static: nodes using them honour a ("/tf", "tf") remap like any other topic.
             for kind, topic in _TF_ENDPOINTS[name]:
-                out.facts.endpoints.append(
-                    (kind, Endpoint(topic, "tf2_msgs/msg/TFMessage", _span(path, t)), out.owner))
+                out.endpoint(kind, topic, "tf2_msgs/msg/TFMessage", t)
             continue
         if name in _ENDPOINT_CALLS or name in ("create_server",):
             j = i + 1

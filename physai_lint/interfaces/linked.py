@@ -26,8 +26,8 @@ import re
 from collections.abc import Callable, Iterable
 from typing import Any
 
-from .cpp_scopes import CppFacts, blank_code, scopes
-from .extract_cpp import _file_interface, member_initialisers, merge_facts, skim, tokenize
+from .cpp_scopes import CppFacts, blank_code
+from .extract_cpp import _everything, _file_interface, member_initialisers, merge_facts, skim, tokenize
 from .model import NodeInterface
 
 Reader = Callable[[str], "str | None"]
@@ -50,7 +50,7 @@ def extract_linked(own: list[tuple[str, str]], library: list[tuple[str, str]], r
     class, qualified or not); ``read`` reads the headers the sources include."""
     own_parts = [part for path, text in own for part in _facts(path, text, cache, read)]
     if not library:
-        return merge_facts([(part, _own) for part in own_parts])
+        return merge_facts([(part, _everything) for part in own_parts])
     lib_parts = [(text, part) for path, text in library for part in _facts(path, text, cache, read)]
     holders = {owner for _, part in lib_parts for owner in _owners(part) if owner is not None}
     runs = _running_classes(own, lib_parts, roots, read, holders)
@@ -63,7 +63,7 @@ def extract_linked(own: list[tuple[str, str]], library: list[tuple[str, str]], r
             return "unnamed"
         return owner in runs
 
-    return merge_facts([(part, _own) for part in own_parts] + [(part, keep) for _, part in lib_parts])
+    return merge_facts([(part, _everything) for part in own_parts] + [(part, keep) for _, part in lib_parts])
 
 
 def _facts(path: str, text: str, cache: Any, read: Reader | None) -> list[CppFacts]:
@@ -91,10 +91,6 @@ def _own_header(path: str, text: str, read: Reader) -> tuple[str, str] | None:
         if include and posixpath.splitext(posixpath.basename(include.group(1)))[0] == stem:
             return _read_include(path, include.group(1), read)
     return None
-
-
-def _own(owner: str | None) -> bool:
-    return True
 
 
 def _owners(part: CppFacts) -> Iterable[str | None]:
@@ -152,7 +148,7 @@ def _classes_of(text: str) -> list[tuple[str, int, int]]:
     view = skim(text)
     if view is None:
         return []
-    return [(c, a, b) for c, a, b in scopes(text, view.starts, view.ends) if c is not None]
+    return [(c, a, b) for c, a, b in view.classes() if c is not None]
 
 
 @functools.lru_cache(maxsize=1024)

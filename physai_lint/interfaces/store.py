@@ -68,12 +68,8 @@ def _endpoints(node: yaml.Node, path: str, diags: list[Diagnostic]) -> list[Endp
             if isinstance(when, yaml.MappingNode):
                 conditions = tuple(sorted((str(k.value), to_python(c)) for k, c in when.value
                                           if isinstance(k, yaml.ScalarNode) and isinstance(c, yaml.ScalarNode)))
-                if len(conditions) != len(when.value):
-                    diags.append(Diagnostic("P104", node_span(path, when),
-                                            "when maps parameter names to plain values"))
-            elif when is not None:
-                diags.append(Diagnostic("P104", node_span(path, when),
-                                        "when maps parameter names to plain values"))
+            if when is not None and (not isinstance(when, yaml.MappingNode) or len(conditions) != len(when.value)):
+                diags.append(Diagnostic("P104", node_span(path, when), "when maps parameter names to plain values"))
             out.append(Endpoint(name.value, t.value if isinstance(t, yaml.ScalarNode) else None,
                                 node_span(path, name), conditions))
         else:
@@ -330,13 +326,9 @@ class InterfaceStore:
                 own, library, roots = list(fn(package, executable) or []), [], []  # type: ignore[misc]
         except Exception:  # noqa: BLE001
             return
-        files: list[tuple[str, str]] = []
-        lib: list[tuple[str, str]] = []
-        from_library = set(library)
-        for p in (list(own) + list(library))[:500]:
-            t = reader(p)
-            if t is not None:
-                (lib if p in from_library else files).append((p, t))
+        own = list(own)[:500]
+        files = [(p, t) for p in own if (t := reader(p)) is not None]
+        lib = [(p, t) for p in list(library)[:500 - len(own)] if (t := reader(p)) is not None]
         if files or lib:
             self.add_extracted(package, executable, files, lib, roots)
 

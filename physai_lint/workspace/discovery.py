@@ -62,10 +62,13 @@ def is_launch_file(name: str) -> bool:
     return name.endswith(LAUNCH_SUFFIXES)
 
 
+_ALSO_WANTED = (".launch", *YAML_SUFFIXES)
+
+
 def _wanted(name: str) -> bool:
     """A file discovery looks at: a launch file, a ``*.launch`` file (ROS 2 or ROS 1 XML), a YAML
     file (a parameter file when it says so), or a package.xml."""
-    return is_launch_file(name) or name.endswith((".launch", *YAML_SUFFIXES)) or name == "package.xml"
+    return is_launch_file(name) or name.endswith(_ALSO_WANTED) or name == "package.xml"
 
 
 def _norm(path: str) -> str:
@@ -218,7 +221,7 @@ def discover(paths: list[str], respect_gitignore: bool = True) -> Discovery:
     gi = GitIgnore() if respect_gitignore else None
     seen_real: set[tuple[int, int]] = set()
 
-    def classify(path: str, name: str, forced: bool) -> None:
+    def file_kind(path: str, name: str, forced: bool) -> None:
         if name == "package.xml":
             manifests.add(path)
         elif name.endswith("launch.py"):
@@ -268,7 +271,7 @@ def discover(paths: list[str], respect_gitignore: bool = True) -> Discovery:
                 continue
             if gi is not None and gi.ignored(path, False):
                 continue
-            classify(path, name, False)
+            file_kind(path, name, False)
         for sub in subdirs:
             walk(sub)
 
@@ -282,12 +285,12 @@ def discover(paths: list[str], respect_gitignore: bool = True) -> Discovery:
             walk(path)
         else:
             explicit.add(path)
-            classify(path, os.path.basename(path), True)
+            file_kind(path, os.path.basename(path), True)
     result.launch_files = sorted(launch)
     result.param_files = sorted(params)
     result.package_xmls = sorted(manifests)
     result.explicit = sorted(explicit)
-    result.undecided = sorted(undecided - launch - params)
+    result.undecided = sorted(undecided - params)
     return result
 
 

@@ -92,13 +92,13 @@ def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | N
     actions: tuple[Any, ...] = ()
     if has_gld:
         builder = ActionBuilder(ev)
-        if isinstance(result, Opaque) and not isinstance(result, Alternatives):
-            actions = (OpaqueAction("opaque@gld", result.span or Span.whole_file(path), None, result.reason),)
-        elif isinstance(result, (LObj, list, tuple, Alternatives)):
+        if isinstance(result, (LObj, list, tuple, Alternatives)):  # Alternatives before Opaque, its base
             try:
                 actions = builder.actions(result, Span.whole_file(path))
             except RecursionError:
                 actions = (OpaqueAction("opaque@gld", Span.whole_file(path), None, "too deeply nested"),)
+        elif isinstance(result, Opaque):
+            actions = (OpaqueAction("opaque@gld", result.span or Span.whole_file(path), None, result.reason),)
         else:
             actions = (OpaqueAction("opaque@gld", Span.whole_file(path), None,
                                     "generate_launch_description does not return a LaunchDescription"),)

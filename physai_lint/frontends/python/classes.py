@@ -293,11 +293,15 @@ def get_attr(ev: Evaluator, obj: ClassValue | Instance | SuperProxy, attr: str, 
     return v
 
 
-def set_attr(obj: Any, attr: str, value: Any) -> None:
-    """``obj.attr = value`` on a simple class or instance (other objects are left as they are)."""
+def set_attr(obj: Any, attr: str, value: Any) -> bool:
+    """``obj.attr = value`` on a simple class or instance; False for other objects, which are left
+    as they are."""
     if isinstance(obj, Instance):
         if obj.cls.frozen:
             raise Raise()  # dataclasses.FrozenInstanceError
         obj.attrs[attr] = value
     elif isinstance(obj, ClassValue):
         obj.attrs[attr] = value
+    else:
+        return False
+    return True

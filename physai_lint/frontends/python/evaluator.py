@@ -35,8 +35,7 @@ from .core import (
 )
 from .expressions import ExpressionsMixin
 from .positions import SpanMaker
-from .runtime import (Alternatives, Branched, ClassValue, CondTag, Instance, LObj, ModuleValue, Opaque, Ref, SymBool,
-                      UserFunc)
+from .runtime import Alternatives, Branched, CondTag, LObj, ModuleValue, Opaque, Ref, SymBool, UserFunc
 
 __all__ = ["BUILTIN_NAMES", "MAX_DEPTH", "Abort", "Evaluator", "ModuleCtx", "Scope", "is_concrete", "truth"]
 
@@ -135,11 +134,8 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
         elif isinstance(t, ast.Starred):
             self.assign(t.value, value, scope)
         elif isinstance(t, ast.Attribute):
-            obj = self.ev(t.value, scope)
-            if isinstance(obj, (Instance, ClassValue)):
-                classes.set_attr(obj, t.attr, value)
-            else:  # e.g. loader.use_camera = LaunchConfiguration('use_camera') on an unknown loader
-                self.escape([value])
+            if not classes.set_attr(self.ev(t.value, scope), t.attr, value):
+                self.escape([value])  # loader.use_camera = LaunchConfiguration(...) on an unknown loader
 
     def st_FunctionDef(self, s: ast.FunctionDef, scope: Scope) -> None:
         value: Any = self.make_func(s, scope)
@@ -236,7 +232,7 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
                 continue  # never reached: nothing known
             for outcome, block in ((True, node.body), (False, node.orelse)):
                 if outcome not in taken and block:
-                    out.append((block[0].lineno, max(getattr(b, "end_lineno", b.lineno) or b.lineno for b in block)))
+                    out.append((block[0].lineno, block[-1].end_lineno or block[-1].lineno))
         return out
 
     def st_For(self, s: ast.For, scope: Scope) -> None:

@@ -20,6 +20,7 @@ import re
 from dataclasses import dataclass, field
 
 from .model import Endpoint, ParamDecl
+from physai_lint.model.span import Span
 
 Scope = tuple[str | None, int, int]  # (class or None, start offset, end offset)
 
@@ -49,6 +50,11 @@ class CppFacts:
     classes: tuple[tuple[str, int, int], ...] = ()  # (class, start, end) of its code pieces
     # message_filters subscribers this file declares (a header's members): name -> message type
     filters: dict[str, str | None] = field(default_factory=dict)
+    # where the code makes a node (``: Node("talker")``): name or None, passed on, span, class
+    node_sites: list[tuple[str | None, bool, Span | None, str | None]] = field(default_factory=list)
+    # ``make_shared<LifecycleTalker>("lc_talker")``: class, its first argument's literal (None:
+    # not a literal), span
+    makes: list[tuple[str, str | None, Span | None]] = field(default_factory=list)
 
     def empty(self) -> bool:
         return not (self.endpoints or self.unnamed or self.parameters or self.lifecycle)

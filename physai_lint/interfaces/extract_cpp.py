@@ -28,7 +28,7 @@ from physai_lint.model.span import Span
 
 from .cpp_scopes import CppFacts, owner_at, scopes
 from .cpp_scopes import _inside as _in_skimmed
-from .model import Endpoint, NodeInterface, ParamDecl
+from .model import Endpoint, NodeInterface, NodeSite, ParamDecl, decide_node_name
 
 MAX_SOURCE = 2_000_000
 
@@ -525,6 +525,8 @@ def merge_facts(parts: list[tuple[CppFacts, Callable[[str | None], bool | str]]]
     its kind and type only (code that may or may not run), and a parameter or lifecycle base is
     kept. The first declaration of a parameter wins; any declaration of it makes it read-only."""
     iface = _interface("extracted from C++ sources")
+    sites: list[NodeSite] = []
+    makes: list[tuple[str, str | None, Span | None]] = []
     for part, keep in parts:
         for kind, endpoint, owner in part.endpoints:
             verdict = keep(owner)
@@ -534,15 +536,19 @@ def merge_facts(parts: list[tuple[CppFacts, Callable[[str | None], bool | str]]]
                 getattr(iface, kind).append(endpoint)
         iface.unnamed.extend((kind, type_) for kind, type_, owner in part.unnamed if keep(owner))
         iface.lifecycle = iface.lifecycle or any(keep(owner) for owner in part.lifecycle)
+        sites.extend((name, (owner or "") if passed else None, span)
+                     for name, passed, span, owner in part.node_sites if keep(owner))
+        makes.extend(part.makes)
         for decl, owner in part.parameters:
             if keep(owner):
                 mine = iface.parameters.setdefault(decl.name, dataclasses.replace(decl))  # type: ignore[union-attr]
                 if decl.read_only:
                     mine.read_only = True
+    decide_node_name(iface, sites, makes)
     return iface
 
 
-CACHE_KIND = "cpp-facts-3"  # the disk cache's kind for what one file declares (3: filter members)
+CACHE_KIND = "cpp-facts-4"  # the disk cache's kind for what one file declares (4: node names)
 
 
 @functools.lru_cache(maxsize=1024)
@@ -608,7 +614,8 @@ def _descriptor_read_only(arg: list[Tok], names: set[str]) -> bool:
 # files of a workspace), and tokenizing it is most of the cost.
 _WORDS = (r"create_(?:publisher|subscription|service|client|server)|advertise|subscribe"
           r"|declare_(?:parameter|or_get_parameter)|Transform(?:Listener|Broadcaster)|LifecycleNode")
-_CALL_WORDS = re.compile(_WORDS + "|message_filters")
+_CALL_WORDS = re.compile(_WORDS + r"|message_filters|Node\s*(?:::\s*make_shared\s*)?\("
+                         r'|make_(?:shared|unique)\s*<[\w:\s]*>\s*\(\s*"')
 _TF_ENDPOINTS = {
     "TransformListener": (("subscribers", "/tf"), ("subscribers", "/tf_static")),
     "TransformBroadcaster": (("publishers", "/tf"),),
@@ -677,6 +684,7 @@ class _Whole:
     """Every token of the file (the fallback, and the reference the windows are tested against)."""
 
     def __init__(self, text: str) -> None:
+        self.text = text
         self.toks = tokenize(text)
 
     def anchors(self) -> list[tuple[list[Tok], int, int]]:
@@ -1023,6 +1031,9 @@ class _Collector:
     def lifecycle(self) -> None:
         self.facts.lifecycle.append(self.owner)
 
+    def node_site(self, name: str | None, passed: bool, span: Span | None) -> None:
+        self.facts.node_sites.append((name, passed, span, self.owner))
+
 
 def _extract_from(path: str, view: _Whole | _Windows, facts: CppFacts) -> None:
     consts = view.constants()
@@ -1128,6 +1139,87 @@ def _extract_from(path: str, view: _Whole | _Windows, facts: CppFacts) -> None:
             if (toks[i].line, toks[i].col) not in declared:
                 out.at(p)
                 _filter_initialiser(toks, i, filters[member], consts, out)
+    _node_sites(path, view, consts, out)
+
+
+# ---- the node the code makes ----------------------------------------------------------------------
+# ``: Node("talker")``, ``: rclcpp::Node("talker", options)``, ``: nav2_util::LifecycleNode("amcl",
+# "", options)``, ``rclcpp::Node::make_shared("talker")``, ``std::make_shared<rclcpp::Node>("talker")``,
+# ``new rclcpp::Node("talker")``: the first argument is the name rclcpp gives the node when the
+# command line does not rename it (``-r __node:=``, which launch adds for ``name=``). Read from the
+# text with a few regular expressions (each starts with a literal, which the regex engine scans
+# for fast: a leading ``\b`` or alternation made them twenty times slower), not tokenized.
+
+_NODE_CALL = re.compile(r"Node\s*(?:::\s*make_shared\s*)?\(")
+_NODE_MAKE = re.compile(r"make_shared\s*<\s*(?:\w+\s*::\s*)*(?:Lifecycle)?Node\s*>\s*\(")
+_MAKE = re.compile(r'make_(?:shared|unique)\s*<\s*(?:\w+\s*::\s*)*(\w+)\s*>\s*\(')
+# the first argument, after the "(": a literal, a name, a declaration, ``std::string("x")``
+_LITERAL_ARG = re.compile(r'\s*"((?:[^"\\\n]|\\.)*)"\s*[,)]')
+_NAME_ARG = re.compile(r"\s*((?:\w+\s*::\s*)*\w+)\s*[,)]")
+_STRING_ARG = re.compile(r'\s*(?:std\s*::\s*)?string\s*[({]\s*"((?:[^"\\\n]|\\.)*)"\s*[)}]\s*[,)]')
+_DECLARATION_ARG = re.compile(r"\s*(?:\)|(?:const|volatile)\b|[\w:<>]+\s*[&*]+\s*\w|[\w:<>]+\s+\w+\s*[,)=])")
+
+
+def _after_word(text: str, p: int) -> bool:
+    return not (p and text[p - 1] in _IDCHARS)
+
+
+def _node_sites(path: str, view: _Whole | _Windows, consts: _Constants, out: _Collector) -> None:
+    """Record each place the file makes a node (not a declaration ``Node(const std::string &
+    name)``), and each class construction's first literal (``_makes``)."""
+    text = view.text
+    inside = view._inside if isinstance(view, _Windows) else (lambda p: False)
+    starts = []  # (offset of the word, offset after its "(")
+    for m in _NODE_CALL.finditer(text):
+        p = m.start()
+        if not _after_word(text, p):  # ``LifecycleNode(`` only, not ``MyNode(``
+            if text[p - 9:p] != "Lifecycle" or not _after_word(text, p - 9):
+                continue
+            p -= 9
+        starts.append((p, m.end()))
+    starts.extend((m.start(), m.end()) for m in _NODE_MAKE.finditer(text) if _after_word(text, m.start()))
+    for p, arg in sorted(starts):
+        if inside(p) or text[max(0, p - 8):p].rstrip().endswith(("~", "class", "struct")):
+            continue
+        out.at(p)
+        if _DECLARATION_ARG.match(text, arg):
+            continue  # ``Node()`` (rclcpp::Node has none), or a parameter list
+        lit = _LITERAL_ARG.match(text, arg) or _STRING_ARG.match(text, arg)
+        if lit:
+            out.node_site(_unescape(lit.group(1)), False, _text_span(path, text, lit.start(1) - 1, lit.end(1) + 1))
+            continue
+        ident = _NAME_ARG.match(text, arg)
+        word = ident.group(1).rsplit(":", 1)[-1].strip() if ident else None
+        value = consts.get(word) if word else None
+        span = _text_span(path, text, ident.start(1), ident.end(1)) if ident else None
+        if value is not None:
+            out.node_site(value, False, span)
+            continue
+        passed = word is not None and re.search(
+            r"\b(?:string|char|auto)\s*(?:const\s*)?[&*]?\s*" + re.escape(word) + r"\s*[,)=]",
+            text[max(0, p - 4000):p]) is not None
+        out.node_site(None, passed, span)
+    _makes(path, text, inside, out.facts)
+
+
+def _makes(path: str, text: str, inside: Callable[[int], bool], facts: CppFacts) -> None:
+    """``make_shared<LifecycleTalker>("lc_talker")``: the literal a class is constructed with
+    first (the name its constructor may pass on to ``Node``), None for another argument."""
+    for m in _MAKE.finditer(text):
+        if not _after_word(text, m.start()) or inside(m.start()):
+            continue
+        lit = _LITERAL_ARG.match(text, m.end())
+        if lit:
+            facts.makes.append((m.group(1), _unescape(lit.group(1)),
+                                _text_span(path, text, lit.start(1) - 1, lit.end(1) + 1)))
+        else:
+            facts.makes.append((m.group(1), None, _text_span(path, text, m.start(1), m.end(1))))
+
+
+def _text_span(path: str, text: str, a: int, b: int) -> Span:
+    line = text.count("\n", 0, a) + 1
+    col = a - text.rfind("\n", 0, a)
+    return Span(path, line, col, line, col + (b - a))
 
 
 # ---- message_filters ----------------------------------------------------------------------------

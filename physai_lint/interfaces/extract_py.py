@@ -4,20 +4,24 @@ Recognised: ``create_publisher(T, 'n', qos)`` (and rclpy.lifecycle's ``create_li
 ``create_subscription(T, 'n', cb, qos)``, ``create_service(T, 'n', cb)``, ``create_client(T, 'n')``,
 ``ActionServer(node, T, 'n', ...)``, ``ActionClient(node, T, 'n')``, ``declare_parameter('n',
 default)`` and ``declare_parameters(namespace, [('n', default), ...])``; a class derived from
-``rclpy.lifecycle.Node`` makes the node a lifecycle node. Names come from string literals
+``rclpy.lifecycle.Node`` makes the node a lifecycle node; ``super().__init__('talker')`` (and the
+other ways to make a node) names the node when launch does not. Names come from string literals
 or module-level string constants; message types from the file's imports.
 """
 from __future__ import annotations
 
 import ast
+import posixpath
+from collections.abc import Callable
 from typing import Any
 
 from physai_lint.model.span import Span
 from physai_lint.pyast import ast_nodes
 
-from .model import Endpoint, NodeInterface, ParamDecl
+from .model import Endpoint, NodeInterface, NodeSite, ParamDecl, decide_node_name
 
 MAX_SOURCE = 2_000_000
+Reader = Callable[[str], "str | None"]
 
 _CALLS = {
     "create_publisher": ("publishers", 0, 1, "msg_type", "topic"),
@@ -154,10 +158,14 @@ def _param_from(name: str, value_node: ast.AST | None, path: str, span: Span) ->
                      has_default=ok and value is not None)
 
 
-def extract_py(files: list[tuple[str, str]]) -> NodeInterface:
+def extract_py(files: list[tuple[str, str]], read: Reader | None = None) -> NodeInterface:
+    """What the sources declare together; ``read`` (path -> text or None) reads the package's
+    modules whose classes they construct, for the node those make."""
     iface = NodeInterface(publishers=[], subscribers=[], services=[], clients=[],
                           action_servers=[], action_clients=[], parameters={},
                           parameters_complete=False, source="extracted from Python sources")
+    sites: list[NodeSite] = []
+    makes: list[tuple[str, str | None, Span | None]] = []
     for path, text in files:
         if len(text) > MAX_SOURCE:
             continue
@@ -166,10 +174,179 @@ def extract_py(files: list[tuple[str, str]]) -> NodeInterface:
         except (SyntaxError, ValueError, RecursionError, MemoryError):
             continue
         try:
-            _extract_one(path, tree, iface)
+            imports, consts = _extract_one(path, tree, iface)
+            found, made = _node_sites(path, tree, imports, consts)
+            sites.extend(site for site, _ in found)
+            makes.extend(made)
+            defined = {c.name for c in ast.walk(tree) if isinstance(c, ast.ClassDef)}
+            if read is not None:
+                sites.extend(_imported_node_sites(path, tree, {c for c, _, _ in made} - defined, read))
         except RecursionError:
             continue
+    decide_node_name(iface, sites, makes)
     return iface
+
+
+# ---- the node the code makes ----------------------------------------------------------------------
+# ``super().__init__('talker')`` in a class derived from a node class, ``Node.__init__(self,
+# 'talker')``, ``rclpy.create_node('talker')``, ``Node('talker')``: the name rclpy gives the node
+# when the command line does not rename it (``-r __node:=``, which launch adds for ``name=``).
+
+_NODE_CLASSES = frozenset({"rclpy.node.Node", "rclpy.lifecycle.Node", "rclpy.lifecycle.LifecycleNode",
+                           "rclpy.lifecycle.node.LifecycleNode"})
+_NODE_MAKERS = _NODE_CLASSES | {"rclpy.create_node"}
+_NOT_A_SITE = ast.Pass()
+
+
+def _node_classes(tree: ast.Module, imports: dict[str, str]) -> set[str]:
+    """The classes of the file derived from a node class: rclpy's, one of the file's own, or an
+    imported one whose name ends in ``Node`` (a package's own base class)."""
+    classes = [n for n in ast.walk(tree) if isinstance(n, ast.ClassDef)]
+    found: set[str] = set()
+    grew = True
+    while grew:
+        grew = False
+        for c in classes:
+            if c.name not in found and any(_is_node_base(b, imports, found) for b in c.bases):
+                found.add(c.name)
+                grew = True
+    return found
+
+
+def _is_node_base(base: ast.AST, imports: dict[str, str], own: set[str]) -> bool:
+    full = _qualified(base, imports)
+    return full is not None and (full in _NODE_CLASSES or full.rsplit(".", 1)[-1] in own
+                                 or full.rsplit(".", 1)[-1].endswith("Node"))
+
+
+def _name_argument(call: ast.Call, in_node_class: bool, imports: dict[str, str],
+                   own: set[str]) -> ast.AST | None:
+    """The argument naming the node ``call`` makes (None: it names none), or ``_NOT_A_SITE``."""
+    fn = call.func
+    if isinstance(fn, ast.Attribute) and fn.attr == "__init__":
+        if not in_node_class:
+            return _NOT_A_SITE
+        if isinstance(fn.value, ast.Call) and isinstance(fn.value.func, ast.Name) and fn.value.func.id == "super":
+            return _arg(call, 0, "node_name")
+        if _is_node_base(fn.value, imports, own):
+            return _arg(call, 1, "node_name")
+        return _NOT_A_SITE
+    if _qualified(fn, imports) in _NODE_MAKERS:
+        return _arg(call, 0, "node_name")
+    return _NOT_A_SITE
+
+
+def _node_sites(path: str, tree: ast.Module, imports: dict[str, str], consts: dict[str, str]
+                ) -> tuple[list[tuple[NodeSite, str | None]], list[tuple[str, str | None, Span | None]]]:
+    """The places the file makes a node, each with the class whose code it is in; and each class
+    construction with its first argument's literal (None: another argument, or none):
+    ``LifecycleTalker('lc_talker')`` names the node a constructor that passes its argument on
+    to ``Node`` makes."""
+    own = _node_classes(tree, imports)
+    sites: list[tuple[NodeSite, str | None]] = []
+    makes: list[tuple[str, str | None, Span | None]] = []
+
+    def visit(node: ast.AST, cls: str | None, params: frozenset[str]) -> None:
+        for child in ast.iter_child_nodes(node):
+            if isinstance(child, ast.ClassDef):
+                visit(child, child.name if child.name in own else None, params)
+                continue
+            if isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)):
+                a = child.args
+                names = {x.arg for x in (*a.posonlyargs, *a.args, *a.kwonlyargs)}
+                names |= {x.arg for x in (a.vararg, a.kwarg) if x is not None}
+                visit(child, cls, frozenset(names))
+                continue
+            if isinstance(child, ast.Call):
+                arg = _name_argument(child, cls is not None, imports, own)
+                if arg is not _NOT_A_SITE and arg is not None:
+                    name = _str_of(arg, consts)
+                    passed = name is None and isinstance(arg, ast.Name) and arg.id in params
+                    sites.append(((name, (cls or "") if passed else None, _span(path, arg)), cls))
+                elif arg is _NOT_A_SITE:
+                    callee = (_dotted(child.func) or "").rsplit(".", 1)[-1]
+                    if callee[:1].isupper():
+                        makes.append((callee, _str_of(_arg(child, 0, "node_name"), consts),
+                                      _span(path, child)))
+            visit(child, cls, params)
+
+    visit(tree, None, frozenset())
+    return sites, makes
+
+
+_MAX_FOLLOWED = 8  # imported classes read per file for the node they make
+
+
+def _imported_node_sites(path: str, tree: ast.Module, classes: set[str], read: Reader
+                         ) -> list[NodeSite]:
+    """The places where the imported ``classes`` (those the file constructs) make a node, read
+    from the package's own modules they come from (``from my_pkg.talker import Talker``,
+    ``from .talker import Talker``): the entry module of a console script often only constructs
+    the node class another module defines. A class of another package is not read."""
+    out: list[NodeSite] = []
+    for cls, module, level in _imports_of(tree, classes)[:_MAX_FOLLOWED]:
+        found = _module_source(path, module, level, read)
+        if found is None:
+            continue
+        mpath, mtree = found
+        real = cls[1]
+        mimports = _imports(ast_nodes(mtree))
+        bases = {c.name: [(_dotted(b) or "").rsplit(".", 1)[-1] for b in c.bases]
+                 for c in ast.walk(mtree) if isinstance(c, ast.ClassDef)}
+        chain, todo = set(), [real]
+        while todo:  # the class and the bases of it the module defines
+            c = todo.pop()
+            if c in bases and c not in chain:
+                chain.add(c)
+                todo.extend(bases[c])
+        if real not in chain:
+            continue
+        sites, _ = _node_sites(mpath, mtree, mimports, _const_strings(mtree))
+        out.extend(site for site, owner in sites if owner in chain)
+    return out
+
+
+def _imports_of(tree: ast.Module, classes: set[str]) -> list[tuple[tuple[str, str], str, int]]:
+    """((local name, name in its module), module, level) of each of ``classes`` imported with
+    ``from ... import``."""
+    out = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.ImportFrom):
+            for a in node.names:
+                local = a.asname or a.name
+                if local in classes:
+                    out.append(((local, a.name), node.module or "", node.level))
+    return sorted(out)
+
+
+def _module_source(path: str, module: str, level: int, read: Reader) -> tuple[str, ast.Module] | None:
+    """The file and tree of ``module`` imported from ``path`` (``level`` dots), when it is one of
+    the package's own: beside the file, or under one of its three nearest parent folders."""
+    parts = [p for p in module.split(".") if p]
+    folder = posixpath.dirname(path)
+    if level:
+        for _ in range(level - 1):
+            folder = posixpath.dirname(folder)
+        roots = [folder]
+    else:
+        roots = []
+        for _ in range(3):
+            folder = posixpath.dirname(folder)
+            roots.append(folder)
+    for root in roots:
+        if not parts:
+            candidates = [posixpath.join(root, "__init__.py")]
+        else:
+            candidates = [posixpath.join(root, *parts) + ".py", posixpath.join(root, *parts, "__init__.py")]
+        for candidate in candidates:
+            text = read(candidate)
+            if text is None or len(text) > MAX_SOURCE:
+                continue
+            try:
+                return candidate, ast.parse(text, filename=candidate)
+            except (SyntaxError, ValueError, RecursionError, MemoryError):
+                return None
+    return None
 
 
 def _is_true(node: ast.AST | None) -> bool:
@@ -200,7 +377,9 @@ def _descriptor_read_only(node: ast.AST | None, names: set[str]) -> bool:
     return name is not None and name in names
 
 
-def _extract_one(path: str, tree: ast.Module, iface: NodeInterface) -> None:
+def _extract_one(path: str, tree: ast.Module, iface: NodeInterface
+                 ) -> tuple[dict[str, str], dict[str, str]]:
+    """Add what one file declares to ``iface``; the file's imports and string constants."""
     nodes = ast_nodes(tree)
     imports = _imports(nodes)
     consts = _const_strings(tree)
@@ -258,3 +437,4 @@ def _extract_one(path: str, tree: ast.Module, iface: NodeInterface) -> None:
                                                            _span(path, item.elts[0])))
                 if len(item.elts) > 2 and _descriptor_read_only(item.elts[2], read_only):
                     decl.read_only = True
+    return imports, consts

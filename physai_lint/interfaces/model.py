@@ -66,6 +66,13 @@ class NodeInterface:
     # (kind, type) of each endpoint the code makes under a name not known statically (a
     # parameter's value, a computed string): it may be the other end of any topic of that type
     unnamed: list[tuple[str, str | None]] = field(default_factory=list)
+    # The name the code gives its node when the launch file gives none (``Node("talker")``,
+    # ``super().__init__('talker')``), and where: ``node_name_decided`` says this layer has the
+    # word on it; decided with ``node_name`` None, the name cannot be told (computed, or the
+    # executable makes several nodes).
+    node_name: str | None = None
+    node_name_span: Span | None = None
+    node_name_decided: bool = False
 
     def endpoints(self, kind: str) -> list[Endpoint]:
         return list(getattr(self, kind) or [])
@@ -94,6 +101,41 @@ LIFECYCLE_ENDPOINTS: tuple[tuple[str, str, str], ...] = (
     ("services", "~/get_available_transitions", "lifecycle_msgs/srv/GetAvailableTransitions"),
     ("services", "~/get_transition_graph", "lifecycle_msgs/srv/GetAvailableTransitions"),
 )
+
+
+# A place the code makes a node: (its name, or None when not known statically; when that argument
+# only passes on the name a constructor was given, that constructor's class ("" outside a class),
+# else None; where)
+NodeSite = tuple[str | None, str | None, Span | None]
+
+
+def decide_node_name(iface: NodeInterface, sites: list[NodeSite],
+                     makes: list[tuple[str, str | None, Span | None]] = ()) -> None:  # type: ignore[assignment]
+    """Set ``iface``'s node name from the places its code makes a node. No place: no word on it.
+    A name a constructor passes on (``Node(node_name)``) is the literal the code constructs that
+    class with (``makes``: class, name or None when not a literal, where;
+    ``make_shared<LifecycleTalker>("lc_talker")``).
+    Then one literal name, wherever it is written: that name. Several names, a computed one, or
+    only names passed on from a caller not seen: decided, not known. A name passed on is left
+    aside when a literal one is written elsewhere (the subclass's ``super().__init__('planner')``
+    names the node its base class makes)."""
+    if not sites:
+        return
+    iface.node_name_decided = True
+    given: dict[str, list[tuple[str | None, Span | None]]] = {}
+    for cls, name, span in makes:
+        given.setdefault(cls, []).append((name, span))
+    resolved: list[NodeSite] = []
+    for name, passed, span in sites:
+        if passed and passed in given:
+            resolved.extend((n, None, s) for n, s in given[passed])
+        else:
+            resolved.append((name, passed, span))
+    named = {n for n, _, _ in resolved if n is not None}
+    if len(named) != 1 or any(n is None and passed is None for n, passed, _ in resolved):
+        return
+    iface.node_name = named.pop()
+    iface.node_name_span = next(s for n, _, s in resolved if n == iface.node_name)
 
 
 def with_lifecycle_endpoints(iface: Any) -> Any:

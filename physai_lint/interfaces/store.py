@@ -148,6 +148,8 @@ def parse_interfaces_file(path: str, text: str) -> tuple[dict[Key, NodeInterface
                                                 "parameters must map names to declarations"))
                 elif field == "parameters_complete":
                     iface.parameters_complete = bool(to_python(fv))
+                elif field == "node_name":
+                    _declared_node_name(iface, fv, path, diags)
                 else:
                     diags.append(Diagnostic("P104", node_span(path, fk),
                                             f"unknown field \"{field}\" in an interfaces entry"))
@@ -155,6 +157,21 @@ def parse_interfaces_file(path: str, text: str) -> tuple[dict[Key, NodeInterface
             diags.append(Diagnostic("P104", node_span(path, v), "expected a mapping"))
         out[(pkg, exe)] = iface
     return out, diags
+
+
+def _declared_node_name(iface: NodeInterface, value: yaml.Node, path: str, diags: list[Diagnostic]) -> None:
+    """``node_name: talker``: the name the executable gives its node when launch gives none;
+    ``null`` when it cannot be told (the executable makes several nodes, or computes the name)."""
+    from physai_lint.resolve.names import validate_node_name
+
+    if isinstance(value, yaml.ScalarNode) and value.tag == "tag:yaml.org,2002:null":
+        iface.node_name_decided = True
+        return
+    if not isinstance(value, yaml.ScalarNode) or validate_node_name(value.value):
+        diags.append(Diagnostic("P104", node_span(path, value),
+                                "node_name must be a valid node name (letters, digits, underscores), or null"))
+        return
+    iface.node_name, iface.node_name_span, iface.node_name_decided = value.value, node_span(path, value), True
 
 
 # ---- bundled schemas ----------------------------------------------------------------------------
@@ -183,6 +200,9 @@ def _bundled_entry(data: dict[str, Any], path: str) -> NodeInterface:
                              bool(spec.get("dynamic_type", False)))
             iface.parameters[str(name)] = decl
     iface.parameters_complete = bool(data.get("parameters_complete", False))
+    if "node_name" in data:
+        name = data["node_name"]
+        iface.node_name, iface.node_name_decided = (name if isinstance(name, str) else None), True
     iface.parameter_patterns = list(data.get("parameter_patterns", []) or [])
     return iface
 
@@ -247,6 +267,9 @@ def merge(layers: Iterable[NodeInterface]) -> NodeInterface | None:
     out.parameters_complete = complete and params is not None
     out.parameter_patterns = patterns
     out.lifecycle = any(layer.lifecycle for layer in layers)
+    named = next((layer for layer in layers if layer.node_name_decided), None)
+    if named is not None:
+        out.node_name, out.node_name_span, out.node_name_decided = named.node_name, named.node_name_span, True
     return out
 
 
@@ -274,7 +297,7 @@ class InterfaceStore:
         if cpp or lib:
             layers.append(extract_linked(cpp, lib, list(roots or ()), self.cache, self._read))
         if py:
-            layers.append(extract_py(py))
+            layers.append(extract_py(py, self._read))
         merged = merge(layers) if layers else None
         if merged is not None:
             merged.parameters_complete = False

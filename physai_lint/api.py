@@ -11,7 +11,7 @@ import math
 import os
 from typing import Any
 
-from physai_lint.engine import CheckOptions, Project, build_project
+from physai_lint.engine import CheckOptions, Project, build_project, name_nodes
 from physai_lint.errors import UsageError
 from physai_lint.resolve.model import LaunchResult, NodeInstance, ResolvedParamFile
 
@@ -22,6 +22,7 @@ def _project(opts: CheckOptions, entry: str) -> tuple[Project, LaunchResult]:
     from dataclasses import replace
 
     project = build_project(replace(opts, paths=[entry]))
+    name_nodes(project)
     entry_abs = os.path.abspath(entry).replace(os.sep, "/")
     for launch in project.launches:
         if launch.entry == entry_abs:

@@ -5,7 +5,7 @@ import os
 from dataclasses import replace
 from typing import Any
 
-from physai_lint.engine import CheckOptions, build_project
+from physai_lint.engine import CheckOptions, build_project, name_nodes
 
 
 def compute_plan(opts: CheckOptions, entry: str, cwd: str | None = None) -> tuple[Any, str]:
@@ -18,6 +18,7 @@ def compute_plan(opts: CheckOptions, entry: str, cwd: str | None = None) -> tupl
     cwd = (cwd or os.getcwd()).replace(os.sep, "/")
     target = os.path.normpath(os.path.join(cwd, entry)).replace(os.sep, "/")
     project = build_project(replace(opts, paths=[entry]), cwd)
+    name_nodes(project)
     launch = next((l for l in project.launches if l.entry == target), None)
     if launch is None:
         if not project.launches:

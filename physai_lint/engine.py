@@ -269,7 +269,16 @@ def run_checks(project: Project, opts: CheckOptions, progress: Any = None) -> li
     # (physai_lint/parallel.py).
     if project.interfaces is not None:
         prefetch_interfaces(project.interfaces, _interface_keys(project.launches), jobs, files)
+    name_nodes(project)
     return run_rules(rules, run_one, jobs, progress, files=files)
+
+
+def name_nodes(project: Project) -> None:
+    """The nodes launch names nothing take the name their code gives them (once the interfaces
+    are extracted: ``interfaces/naming.py``)."""
+    from physai_lint.interfaces.naming import apply_default_names
+
+    apply_default_names(project.launches, project.interfaces)
 
 
 def _named_interface_keys(launch_files: Any) -> Iterator[tuple[str, str]]:

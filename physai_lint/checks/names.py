@@ -9,6 +9,7 @@ from typing import Any
 from physai_lint.checks._util import all_nodes, relpath, switched_off_by
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.checks.topics import graphs
+from physai_lint.interfaces.naming import default_named, name_note
 from physai_lint.model.findings import Diagnostic, Related
 from physai_lint.resolve import names
 from physai_lint.resolve.model import LaunchResult, NodeInstance
@@ -23,7 +24,7 @@ def duplicate_node_name(ctx: CheckContext) -> Iterator[Diagnostic]:
         for node in launch.nodes:
             # Only nodes certainly started under the analysed arguments: a condition that cannot be
             # evaluated (an unknown PythonExpression, say) often excludes the other node.
-            if node.kind == "process" or node.active is not True or not node.fqn or not node.name_explicit:
+            if node.kind == "process" or node.active is not True or not node.fqn or not _named(node):
                 continue
             if node.kind == "composable_node":
                 continue  # N107 covers components; a component and a node are still checked below
@@ -50,7 +51,7 @@ def duplicate_node_name(ctx: CheckContext) -> Iterator[Diagnostic]:
                     "N101", span,
                     f'node "{node.fqn}" is launched twice: {relpath(node.file)} is included '
                     f"{len(sites)} times in the same namespace; services, parameters and topics of "
-                    "the two collide",
+                    f"the two collide{name_note((node,))}",
                     help="include the file once, or give each include its own namespace "
                          "(PushRosNamespace in a GroupAction around it)",
                     related=tuple(Related(s, "included here") for s in sites[:5]),
@@ -59,10 +60,15 @@ def duplicate_node_name(ctx: CheckContext) -> Iterator[Diagnostic]:
             yield Diagnostic(
                 "N101", span,
                 f'node "{node.fqn}" is launched twice (also at line {p.span.line}); '
-                "services, parameters and topics of the two collide",
+                f"services, parameters and topics of the two collide{name_note((node, p))}",
                 help="give each node its own name or namespace (PushRosNamespace / namespace=)",
                 related=(Related(p.spans.get("name", p.span), "first launched here"),),
                 key=node.fqn)
+
+
+def _named(node: NodeInstance) -> bool:
+    """The name is known: launch gives it, or it is the one its code gives (not a computed one)."""
+    return node.name_explicit or default_named(node)
 
 
 def _include_sites(launch: LaunchResult, node: NodeInstance) -> list[Any]:
@@ -106,7 +112,7 @@ def duplicate_component(ctx: CheckContext) -> Iterator[Diagnostic]:
     for launch in ctx.launches:
         first: dict[tuple[str | None, str], list[NodeInstance]] = {}
         for node in launch.nodes:
-            if node.kind != "composable_node" or node.active is not True or not node.fqn or not node.name_explicit:
+            if node.kind != "composable_node" or node.active is not True or not node.fqn or not _named(node):
                 continue
             key = (node.container, node.fqn)
             earlier = first.setdefault(key, [])
@@ -117,7 +123,8 @@ def duplicate_component(ctx: CheckContext) -> Iterator[Diagnostic]:
             seen.add(node.span)
             yield Diagnostic(
                 "N107", node.span,
-                f'component "{node.fqn}" is loaded twice into container "{node.container}"',
+                f'component "{node.fqn}" is loaded twice into container "{node.container}"'
+                f"{name_note((node, prev))}",
                 help="give each component a distinct name or namespace",
                 related=(Related(prev.span, "first loaded here"),),
                 key=node.fqn)

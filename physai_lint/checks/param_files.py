@@ -9,6 +9,7 @@ from typing import Any
 from physai_lint.checks._util import all_nodes, switched_off_by, where
 from physai_lint.checks._util import relpath as _rel
 from physai_lint.checks.base import CheckContext, rule
+from physai_lint.interfaces.naming import name_note
 from physai_lint.model.findings import Diagnostic, Related
 from physai_lint.resolve.model import ResolvedParamFile
 
@@ -90,7 +91,8 @@ def _whole_file(path: str, model: Any, users: list[tuple[Any, Any]]) -> Diagnost
     return Diagnostic(
         "P103", block.key_span,
         f'no node key of "{_rel(path)}" matches the node(s) that load it ({fqns}): '
-        f"{explain_no_match(block.key, node.fqn)}; the whole file is silently ignored",
+        f"{explain_no_match(block.key, node.fqn)}; the whole file is silently ignored"
+        f"{name_note(n for n, _ in users)}",
         help=f'key the file by the node\'s full name, e.g. "{node.fqn}:", or use a wildcard such as '
              f'"/**/{node.name}:"',
         related=(Related(src.span, "loaded here"),),
@@ -131,7 +133,8 @@ def _stray_keys(path: str, model: Any, users: list[tuple[Any, Any]], keys: dict[
         yield Diagnostic(
             "P103", block.key_span,
             f'node key "{block.key}" of "{_rel(path)}" matches none of the nodes that load the file: '
-            f"{explain_no_match(block.key, node.fqn)}; the parameters under it are silently ignored",
+            f"{explain_no_match(block.key, node.fqn)}; the parameters under it are silently ignored"
+            f"{name_note((node,))}",
             help=f'key it by the node\'s full name, e.g. "{node.fqn.lstrip("/")}:", or use a wildcard such as '
                  f'"/**/{node.name}:"',
             related=(Related(src.span, f"{where(node)} loads it here"),),

@@ -156,10 +156,13 @@ def undeclared(ctx: CheckContext) -> Iterator[Diagnostic]:
 # Nodes whose output does not depend on the clock: leaving them on wall time is harmless.
 # Nodes whose output does not depend on their own clock: static transforms, and the Gazebo
 # bridges, which copy each message's stamp from the other side (ros_gz_bridge convert_*_header);
-# one of them is usually the /clock source itself.
+# one of them is usually the /clock source itself. The simulators' spawn tools put a model in the
+# world and exit (ros_gz_sim create.cpp, gazebo_ros spawn_entity.py).
 _TIME_AGNOSTIC = frozenset({("tf2_ros", "static_transform_publisher"),
                             ("ros_gz_bridge", "parameter_bridge"), ("ros_ign_bridge", "parameter_bridge"),
-                            ("ros_gz_image", "image_bridge"), ("ros_ign_image", "image_bridge")})
+                            ("ros_gz_image", "image_bridge"), ("ros_ign_image", "image_bridge"),
+                            ("ros_gz_sim", "create"), ("ros_ign_gazebo", "create"),
+                            ("gazebo_ros", "spawn_entity.py")})
 
 
 @rule("P111", "inconsistent-use-sim-time")

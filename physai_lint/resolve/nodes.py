@@ -179,13 +179,21 @@ class NodeBuilder:
                 name, name_given = m.group(1), True
             elif m := _NS_OVERRIDE.match(text):
                 ns_raw, ns_given = m.group(1), True
+        own_remaps = self._remaps(a.remappings, scope)
+        keyed = name_given  # launch_ros keys a parameter dict by name= alone (node.py)
+        if not name_given:
+            # remappings=[('__node', 'x')]: launch puts them after its own -r __node:=<name>, so
+            # they rename the node only when name= is not given (rcl: the first rule wins)
+            rename = next((r for r in own_remaps if r.src == "__node" and r.node_prefix is None), None)
+            if rename is not None:
+                name, name_given = rename.dst, True
         namespace, ns_specified = self._namespace(ns_raw, ns_given, scope)
         fqn = names.join_fqn(namespace, name) if (namespace and name) else None
         node_id = self._id()
         remaps, gparams = self._global_sources(scope, node_id, a.span, a.parameters)
-        key = fqn if (name_given and ns_specified and fqn) else "/**"
+        key = fqn if (keyed and ns_specified and fqn) else "/**"
         params = gparams + self._own_params(a.parameters, scope, key)
-        remaps += self._remaps(a.remappings, scope)
+        remaps += own_remaps
         inst_ = NodeInstance(
             id=node_id, kind=a.kind, package=package, executable=executable, name=name,
             namespace=namespace, fqn=fqn, active=fr.active, remaps=remaps, param_sources=params,

@@ -42,4 +42,4 @@ def test_extracted_sources_are_not_trusted_to_be_complete(tmp_path, demo_package
 
 def test_declared_interfaces_are(tmp_path, demo_package):
     assert [m.split(" (")[0] for m in _t102(tmp_path, demo_package, interfaces=True)] == [
-        'remap "chatter_typo" matches no topic of talker']
+        'remap "chatter_typo" matches no topic of /talker']

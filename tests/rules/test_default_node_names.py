@@ -182,3 +182,23 @@ def test_the_graph_lists_the_default_name(demo_graph):
                         "launch/a.launch.py": _launch(NAMESPACED), "config/talker.yaml": "{}\n"},
                        "launch/a.launch.py")
     assert nodes["talker"]["fqn"] == "/robot1/talker"
+
+
+LIFECYCLE_LAUNCH = """from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='nav2_map_server', executable='map_server', parameters=[{'yaml_filename': 'map.yaml'}]),
+        Node(package='nav2_lifecycle_manager', executable='lifecycle_manager', name='lifecycle_manager_map',
+             parameters=[{'autostart': True, 'node_names': ['map_server', 'amcl']}]),
+    ])
+"""
+
+
+def test_a_lifecycle_manager_finds_a_node_by_its_default_name(demo_findings):
+    # map_server's bundled declaration names it "map_server": only "amcl" is missing
+    found = demo_findings({"launch/a.launch.py": LIFECYCLE_LAUNCH}, "launch/a.launch.py", "S201")
+    assert [(line, message.split(";")[0]) for line, message in found] == [
+        (9, 'lifecycle manager /lifecycle_manager_map manages "amcl" (/amcl) but no such node is launched')]

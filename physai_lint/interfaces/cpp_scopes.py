@@ -174,3 +174,98 @@ def _classify(h: str) -> tuple[str, str | None]:
         if _depth0(h, m.start()):  # the function's own name, not one in its parameters
             return "scope", m.group(1)
     return "scope", None
+
+
+# ---- blocks that run under a condition ----------------------------------------------------------
+
+_CONDITION_WORDS = frozenset({"if", "switch", "constexpr"})  # (``if constexpr (...)``)
+_LAST_IDENT = re.compile(r"(\w+)\s*$")
+_BRACELESS = re.compile(r"\s*(?:else\b|if\b)")
+
+
+def code_only(text: str, a: int, b: int, starts: list[int], ends: list[int]) -> str:
+    """``text[a:b]`` with each comment, string and preprocessor line made blanks of its length
+    (offsets are kept)."""
+    k = bisect.bisect_right(starts, a) - 1
+    if k < 0 or ends[k] <= a:
+        k += 1
+    parts, pos = [], a
+    while k < len(starts) and starts[k] < b:
+        parts.append(text[pos:max(starts[k], a)])
+        end = min(ends[k], b)
+        parts.append(" " * (end - max(starts[k], a)))
+        pos = end
+        k += 1
+    parts.append(text[pos:b])
+    return "".join(parts)
+
+
+def conditional_blocks(code: str) -> list[tuple[int, int]]:
+    """The (open, close) offsets in ``code`` (``code_only``'s) of the blocks that run only when a
+    condition the code tests holds: the bodies of ``if``, ``else`` and ``switch``."""
+    out: list[tuple[int, int]] = []
+    stack: list[tuple[int, bool]] = []
+    for m in _BRACES.finditer(code):
+        q = m.start()
+        if code[q] == "{":
+            stack.append((q, _conditional_head(code, q)))
+        elif stack:
+            start, conditional = stack.pop()
+            if conditional:
+                out.append((start, q))
+    return out
+
+
+def _conditional_head(code: str, q: int) -> bool:
+    """Whether the brace at ``q`` opens the body of an ``if``/``else``/``switch``."""
+    j = q - 1
+    while j >= 0 and code[j].isspace():
+        j -= 1
+    if j < 0:
+        return False
+    if code[j] == ")":
+        depth = 0
+        while j >= 0:  # back to the matching "("
+            c = code[j]
+            depth += c == ")"
+            depth -= c == "("
+            if depth == 0:
+                break
+            j -= 1
+        word = _LAST_IDENT.search(code, max(0, j - 40), max(j, 0))
+        return word is not None and word.group(1) in _CONDITION_WORDS
+    return code[max(0, j - 3):j + 1] == "else" and (j < 4 or not (code[j - 4].isalnum() or code[j - 4] == "_"))
+
+
+def braceless_conditional(code: str, p: int) -> bool:
+    """Whether the statement holding offset ``p`` of ``code`` is an ``if (...)`` or ``else`` without
+    braces, or a conditional expression (``a ? create_...(...) : nullptr``)."""
+    s = max(code.rfind(";", 0, p), code.rfind("{", 0, p), code.rfind("}", 0, p)) + 1
+    return _BRACELESS.match(code, s, p) is not None or "?" in code[s:p]
+
+
+_DIRECTIVE = re.compile(r"#\s*(\w+)\s*(\w*)")
+
+
+def preprocessor_branches(text: str, starts: list[int], ends: list[int]) -> list[tuple[int, int]]:
+    """The (start, end) offsets of the code between ``#if``/``#ifdef``/``#ifndef`` and its
+    ``#endif``: compiled only under a condition (``#ifdef WITH_APRILTAG_MSGS``). A header's include
+    guard (``#ifndef X`` followed by ``#define X``) is not one."""
+    directives = []
+    for s, e in zip(starts, ends):
+        if text[s] == "#":
+            m = _DIRECTIVE.match(text, s, e)
+            if m:
+                directives.append((s, m.group(1), m.group(2)))
+    out: list[tuple[int, int]] = []
+    stack: list[tuple[int, bool]] = []
+    for i, (s, word, arg) in enumerate(directives):
+        if word in ("if", "ifdef", "ifndef"):
+            guard = word == "ifndef" and i + 1 < len(directives) and directives[i + 1][1] == "define" \
+                and directives[i + 1][2] == arg
+            stack.append((s, guard))
+        elif word == "endif" and stack:
+            start, guard = stack.pop()
+            if not guard:
+                out.append((start, s))
+    return out

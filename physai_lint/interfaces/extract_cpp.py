@@ -26,9 +26,17 @@ from typing import Any, NamedTuple, Protocol
 
 from physai_lint.model.span import Span
 
-from .cpp_scopes import CppFacts, owner_at, scopes
+from .cpp_scopes import (
+    CppFacts,
+    braceless_conditional,
+    code_only,
+    conditional_blocks,
+    owner_at,
+    preprocessor_branches,
+    scopes,
+)
 from .cpp_scopes import _inside as _in_skimmed
-from .model import Endpoint, NodeInterface, NodeSite, ParamDecl, decide_node_name
+from .model import CODE_CONDITION, Endpoint, NodeInterface, NodeSite, ParamDecl, decide_node_name
 
 MAX_SOURCE = 2_000_000
 
@@ -548,7 +556,7 @@ def merge_facts(parts: list[tuple[CppFacts, Callable[[str | None], bool | str]]]
     return iface
 
 
-CACHE_KIND = "cpp-facts-4"  # the disk cache's kind for what one file declares (4: node names)
+CACHE_KIND = "cpp-facts-5"  # the disk cache's kind for what one file declares (5: conditional endpoints)
 
 
 @functools.lru_cache(maxsize=1024)
@@ -1009,20 +1017,48 @@ class _Collector:
 
     def __init__(self, path: str, view: _Whole | _Windows, facts: CppFacts) -> None:
         self.path, self.facts = path, facts
+        self.view = view if isinstance(view, _Windows) else None
         found = view.classes()
         facts.classes = tuple((c, a, b) for c, a, b in found if c is not None)
         self.scopes, self.firsts = found, [a for _, a, _ in found]
         self.owner: str | None = None
+        self.p = -1
+        self._blocks: dict[int, tuple[str, list[tuple[int, int]]]] = {}  # per scope: its code, blocks
+        self._branches: list[tuple[int, int]] | None = None  # #if ... #endif
 
     def at(self, p: int) -> None:
         """Items from here on are at offset ``p`` (-1: unknown)."""
+        self.p = p
         self.owner = owner_at(self.scopes, self.firsts, p) if p >= 0 else None
+
+    def conditional(self) -> bool:
+        """Whether the code at the current offset runs only under a condition it tests (an
+        ``if``/``else``/``switch`` body, a braceless ``if``, a ``?:``) or is compiled only under one
+        (``#ifdef``). The scope's blocks are found once per scope."""
+        view, p = self.view, self.p
+        if view is None or p < 0:
+            return False
+        if self._branches is None:
+            self._branches = preprocessor_branches(view.text, view.starts, view.ends)
+        if any(a < p < b for a, b in self._branches):
+            return True
+        k = bisect.bisect_right(self.firsts, p) - 1
+        if k < 0 or p >= self.scopes[k][2]:
+            return False
+        if k not in self._blocks:
+            _, a, b = self.scopes[k]
+            code = code_only(view.text, a, b, view.starts, view.ends)
+            self._blocks[k] = (code, conditional_blocks(code))
+        code, blocks = self._blocks[k]
+        at = p - self.scopes[k][1]
+        return any(o < at < c for o, c in blocks) or braceless_conditional(code, at)
 
     def endpoint(self, kind: str, name: str | None, type_: str | None, tok: Tok | None) -> None:
         if name is None:
             self.facts.unnamed.append((kind, type_, self.owner))
         else:
-            self.facts.endpoints.append((kind, Endpoint(name, type_, _span(self.path, tok)),
+            when = CODE_CONDITION if self.conditional() else ()
+            self.facts.endpoints.append((kind, Endpoint(name, type_, _span(self.path, tok), when),
                                          self.owner))
 
     def parameter(self, decl: ParamDecl) -> None:

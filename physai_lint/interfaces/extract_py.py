@@ -18,7 +18,7 @@ from typing import Any
 from physai_lint.model.span import Span
 from physai_lint.pyast import ast_nodes
 
-from .model import Endpoint, NodeInterface, NodeSite, ParamDecl, decide_node_name
+from .model import CODE_CONDITION, Endpoint, NodeInterface, NodeSite, ParamDecl, decide_node_name
 
 MAX_SOURCE = 2_000_000
 Reader = Callable[[str], "str | None"]
@@ -349,6 +349,27 @@ def _module_source(path: str, module: str, level: int, read: Reader) -> tuple[st
     return None
 
 
+def _conditional_ids(nodes: list[ast.AST]) -> set[int]:
+    """The ids of the nodes that run only under a condition the code tests: in the branches of an
+    ``if`` (statement or expression), a ``match`` case or an ``except`` handler."""
+    out: set[int] = set()
+    for node in nodes:
+        if isinstance(node, (ast.If, ast.IfExp)):
+            if isinstance(node.test, ast.Compare) and isinstance(node.test.left, ast.Name) \
+                    and node.test.left.id == "__name__":
+                continue  # ``if __name__ == '__main__':`` runs: it is the script
+            branches: list[Any] = [node.body, node.orelse]
+        elif isinstance(node, ast.match_case | ast.ExceptHandler):
+            branches = [node.body]
+        else:
+            continue
+        for branch in branches:
+            for part in branch if isinstance(branch, list) else [branch]:
+                if id(part) not in out:
+                    out.update(id(x) for x in ast.walk(part))
+    return out
+
+
 def _is_true(node: ast.AST | None) -> bool:
     return isinstance(node, ast.Constant) and node.value is True
 
@@ -384,6 +405,7 @@ def _extract_one(path: str, tree: ast.Module, iface: NodeInterface
     imports = _imports(nodes)
     consts = _const_strings(tree)
     read_only = _read_only_descriptors(nodes)
+    conditional = _conditional_ids(nodes)
     params = iface.parameters
     assert params is not None
     for node in nodes:
@@ -410,7 +432,8 @@ def _extract_one(path: str, tree: ast.Module, iface: NodeInterface
             if name is None:  # a name, just not one known statically
                 iface.unnamed.append((kind, rtype))
                 continue
-            getattr(iface, kind).append(Endpoint(name, rtype, _span(path, name_node)))
+            when = CODE_CONDITION if id(node) in conditional else ()
+            getattr(iface, kind).append(Endpoint(name, rtype, _span(path, name_node), when))
         elif fname == "declare_parameter" and isinstance(fn, ast.Attribute):
             name_node = _arg(node, 0, "name")
             name = _str_of(name_node, consts)

@@ -30,6 +30,12 @@ class Endpoint:
     when: tuple[tuple[str, Any], ...] = ()
 
 
+# ``Endpoint.when`` of an endpoint the code makes only under a condition it tests at run time
+# (``if (subscribe_scan_) { ... }``): a parameter no node has, so whether the node has the
+# endpoint cannot be told. T201/T202 do not report it; it still counts as a topic's other end.
+CODE_CONDITION: tuple[tuple[str, Any], ...] = (("(a condition in the code)", True),)
+
+
 @dataclass
 class ParamDecl:
     name: str

@@ -10,6 +10,7 @@ from physai_lint.checks._util import all_nodes, switched_off_by, where
 from physai_lint.checks._util import relpath as _rel
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.interfaces.naming import name_note
+from physai_lint.params.typing import yaml_syntax_error
 from physai_lint.model.findings import Diagnostic, Related
 from physai_lint.resolve.model import ResolvedParamFile
 
@@ -162,6 +163,15 @@ def mixed_array(ctx: CheckContext) -> Iterator[Diagnostic]:
                 if prm.typed_by == "yaml" and prm.value is None and prm.raw and prm.raw.strip().startswith("[") \
                         and prm.span not in seen:
                     seen.add(prm.span)
+                    problem = yaml_syntax_error(prm.raw)
+                    if problem is not None:
+                        yield Diagnostic(
+                            "P106", prm.span,
+                            f'parameter "{prm.name}" value "{prm.raw}" is not valid YAML ({problem}); launch '
+                            "reads a substituted parameter value with YAML rules and fails to convert it",
+                            help="quote it to pass the text as a string (e.g. \"'[*]'\"), or write a valid YAML list",
+                            key=prm.name)
+                        continue
                     empty = prm.raw.strip()[1:].strip() == "]"
                     yield Diagnostic(
                         "P106", prm.span,

@@ -323,7 +323,17 @@ class _Builder:
             return PList(tuple(items), attr.value_span)
         if not attr.is_str and attr.typed is not None:
             return PLit(attr.typed, attr.value_span)  # type: ignore[arg-type]
-        return PSubst(self.value_of(attr), vtype, attr.value_span, sep)
+        value = self.value_of(attr)
+        if vtype is None and sep is None and all(isinstance(p, Text) for p in value):
+            from physai_lint.params.typing import yaml_syntax_error
+
+            text = "".join(p.text for p in value if isinstance(p, Text))
+            if text and yaml_syntax_error(text) is not None:
+                # launch's get_attr(data_type=None) keeps a literal that YAML cannot read as the
+                # string it is (launch_xml/launch_yaml Entity.get_attr -> coerce_to_type with
+                # can_be_str): value="[*]" is "[*]", not a malformed list
+                return PLit(text, attr.value_span)
+        return PSubst(value, vtype, attr.value_span, sep)
 
 
 _WS = re.compile(r"\s+")

@@ -225,6 +225,22 @@ def has_alias(text: str) -> bool:
     return False
 
 
+def yaml_syntax_error(text: str) -> str | None:
+    """Why ``yaml.safe_load`` cannot read ``text`` (the scanner's or parser's complaint, or "an
+    alias", which is not worked out), or None when it can."""
+    if len(text) > MAX_PYYAML_TEXT:
+        return None
+    if "*" in text and has_alias(text):
+        return "an alias"
+    try:
+        yaml.load(text, Loader=_Loader)
+    except yaml.YAMLError as exc:
+        return str(getattr(exc, "problem", None) or "a syntax error")
+    except (ValueError, TypeError, RecursionError, OverflowError):
+        return "a syntax error"
+    return None
+
+
 def pyyaml_type(text: str) -> Any:
     """What ``yaml.safe_load(text)`` gives (launch ``coerce_to_type``): bool/int/float/str/None/
     date/list/dict. Syntax errors, aliases and over-long texts keep the string. ``""`` -> ``""``."""

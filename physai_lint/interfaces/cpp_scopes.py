@@ -50,8 +50,9 @@ class CppFacts:
     classes: tuple[tuple[str, int, int], ...] = ()  # (class, start, end) of its code pieces
     # message_filters subscribers this file declares (a header's members): name -> message type
     filters: dict[str, str | None] = field(default_factory=dict)
-    # where the code makes a node (``: Node("talker")``): name or None, passed on, span, class
-    node_sites: list[tuple[str | None, bool, Span | None, str | None]] = field(default_factory=list)
+    # where the code makes a node (``: Node("talker")``): name or None, passed on, span, class,
+    # namespace ("" none, None not known)
+    node_sites: list[tuple[str | None, bool, Span | None, str | None, str | None]] = field(default_factory=list)
     # ``make_shared<LifecycleTalker>("lc_talker")``: class, its first argument's literal (None:
     # not a literal), span
     makes: list[tuple[str, str | None, Span | None]] = field(default_factory=list)

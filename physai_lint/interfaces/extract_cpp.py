@@ -544,8 +544,8 @@ def merge_facts(parts: list[tuple[CppFacts, Callable[[str | None], bool | str]]]
                 getattr(iface, kind).append(endpoint)
         iface.unnamed.extend((kind, type_) for kind, type_, owner in part.unnamed if keep(owner))
         iface.lifecycle = iface.lifecycle or any(keep(owner) for owner in part.lifecycle)
-        sites.extend((name, (owner or "") if passed else None, span)
-                     for name, passed, span, owner in part.node_sites if keep(owner))
+        sites.extend((name, (owner or "") if passed else None, span, ns)
+                     for name, passed, span, owner, ns in part.node_sites if keep(owner))
         makes.extend(part.makes)
         for decl, owner in part.parameters:
             if keep(owner):
@@ -556,7 +556,7 @@ def merge_facts(parts: list[tuple[CppFacts, Callable[[str | None], bool | str]]]
     return iface
 
 
-CACHE_KIND = "cpp-facts-5"  # the disk cache's kind for what one file declares (5: conditional endpoints)
+CACHE_KIND = "cpp-facts-6"  # the disk cache's kind for what one file declares (6: node namespaces)
 
 
 @functools.lru_cache(maxsize=1024)
@@ -623,7 +623,7 @@ def _descriptor_read_only(arg: list[Tok], names: set[str]) -> bool:
 _WORDS = (r"create_(?:publisher|subscription|service|client|server)|advertise|subscribe"
           r"|declare_(?:parameter|or_get_parameter)|Transform(?:Listener|Broadcaster)|LifecycleNode")
 _CALL_WORDS = re.compile(_WORDS + r"|message_filters|Node\s*(?:::\s*make_shared\s*)?\("
-                         r'|make_(?:shared|unique)\s*<[\w:\s]*>\s*\(\s*"')
+                         r'|make_(?:shared|unique)\s*<[\w:\s]*>\s*\(\s*"|__(?:node|name|ns):=')
 _TF_ENDPOINTS = {
     "TransformListener": (("subscribers", "/tf"), ("subscribers", "/tf_static")),
     "TransformBroadcaster": (("publishers", "/tf"),),
@@ -1067,8 +1067,8 @@ class _Collector:
     def lifecycle(self) -> None:
         self.facts.lifecycle.append(self.owner)
 
-    def node_site(self, name: str | None, passed: bool, span: Span | None) -> None:
-        self.facts.node_sites.append((name, passed, span, self.owner))
+    def node_site(self, name: str | None, passed: bool, span: Span | None, namespace: str | None) -> None:
+        self.facts.node_sites.append((name, passed, span, self.owner, namespace))
 
 
 def _extract_from(path: str, view: _Whole | _Windows, facts: CppFacts) -> None:
@@ -1196,6 +1196,40 @@ _STRING_ARG = re.compile(r'\s*(?:std\s*::\s*)?string\s*[({]\s*"((?:[^"\\\n]|\\.)
 _DECLARATION_ARG = re.compile(r"\s*(?:\)|(?:const|volatile)\b|[\w:<>]+\s*[&*]+\s*\w|[\w:<>]+\s+\w+\s*[,)=])")
 
 
+# a node's own arguments renaming it: rcl applies them before the command line's (launch's)
+_CODE_REMAP = re.compile(r"__(?:node|name|ns):=")
+
+
+_NAMESPACE_WORD = re.compile(r"(?i)(?:^|[_.>:\s])(?:ns|name_?space)(?:$|_|\b)")
+
+
+def _namespace_argument(text: str, end: int) -> str | None:
+    """The namespace a node constructor's second argument gives (``text[end]`` ends the first
+    argument): "" when there is none (``Node("x")``, ``Node("x", options)``), the literal
+    (``Node("x", "robot1")``), None when not known statically."""
+    if text[end] != ",":
+        return ""
+    lit = _LITERAL_ARG.match(text, end + 1)
+    if lit:
+        return _unescape(lit.group(1))
+    depth, j = 0, end + 1
+    while j < len(text) and j < end + 400:
+        c = text[j]
+        if c in "([{":
+            depth += 1
+        elif c in ")]}":
+            if depth == 0:
+                break
+            depth -= 1
+        elif c in ",;" and depth == 0:
+            break
+        j += 1
+    argument = text[end + 1:j].strip()
+    # (``Node("x", options)``, ``Node("x", o)``, ``Node("x", rclcpp::NodeOptions())``: options;
+    # ``Node("x", ns)``, ``Node("x", robot_namespace_)``: a namespace not known statically)
+    return None if _NAMESPACE_WORD.search(argument) else ""
+
+
 def _after_word(text: str, p: int) -> bool:
     return not (p and text[p - 1] in _IDCHARS)
 
@@ -1222,19 +1256,24 @@ def _node_sites(path: str, view: _Whole | _Windows, consts: _Constants, out: _Co
             continue  # ``Node()`` (rclcpp::Node has none), or a parameter list
         lit = _LITERAL_ARG.match(text, arg) or _STRING_ARG.match(text, arg)
         if lit:
-            out.node_site(_unescape(lit.group(1)), False, _text_span(path, text, lit.start(1) - 1, lit.end(1) + 1))
+            out.node_site(_unescape(lit.group(1)), False, _text_span(path, text, lit.start(1) - 1, lit.end(1) + 1),
+                          _namespace_argument(text, lit.end() - 1))
             continue
         ident = _NAME_ARG.match(text, arg)
         word = ident.group(1).rsplit(":", 1)[-1].strip() if ident else None
         value = consts.get(word) if word else None
         span = _text_span(path, text, ident.start(1), ident.end(1)) if ident else None
+        ns = _namespace_argument(text, ident.end() - 1) if ident else None
         if value is not None:
-            out.node_site(value, False, span)
+            out.node_site(value, False, span, ns)
             continue
         passed = word is not None and re.search(
             r"\b(?:string|char|auto)\s*(?:const\s*)?[&*]?\s*" + re.escape(word) + r"\s*[,)=]",
             text[max(0, p - 4000):p]) is not None
-        out.node_site(None, passed, span)
+        out.node_site(None, passed, span, ns)
+    for m in _CODE_REMAP.finditer(text):  # ``NodeOptions().arguments({"--ros-args", "-r", "__node:=x"})``
+        out.at(m.start())
+        out.node_site(None, False, _text_span(path, text, m.start(), m.end()), "")
     _makes(path, text, inside, out.facts)
 
 

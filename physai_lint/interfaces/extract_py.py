@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import ast
 import posixpath
+import re
 from collections.abc import Callable
 from typing import Any
 
@@ -262,7 +263,10 @@ def _node_sites(path: str, tree: ast.Module, imports: dict[str, str], consts: di
                 if arg is not _NOT_A_SITE and arg is not None:
                     name = _str_of(arg, consts)
                     passed = name is None and isinstance(arg, ast.Name) and arg.id in params
-                    sites.append(((name, (cls or "") if passed else None, _span(path, arg)), cls))
+                    ns = _namespace_of(child, consts)
+                    if _own_arguments_rename(child):
+                        name, passed = None, False  # rcl applies the node's own -r __node:= first
+                    sites.append(((name, (cls or "") if passed else None, _span(path, arg), ns), cls))
                 elif arg is _NOT_A_SITE:
                     callee = (_dotted(child.func) or "").rsplit(".", 1)[-1]
                     if callee[:1].isupper():
@@ -271,7 +275,34 @@ def _node_sites(path: str, tree: ast.Module, imports: dict[str, str], consts: di
             visit(child, cls, params)
 
     visit(tree, None, frozenset())
+    for node in ast.walk(tree):  # a remap of the node's own name anywhere (a cli_args list built apart)
+        if isinstance(node, ast.Constant) and isinstance(node.value, str) and _CODE_REMAP.search(node.value):
+            sites.append(((None, None, _span(path, node), ""), None))
     return sites, makes
+
+
+_CODE_REMAP = re.compile(r"__(?:node|name|ns):=")
+
+
+def _namespace_of(call: ast.Call, consts: dict[str, str]) -> str | None:
+    """The namespace a node's construction gives (rclpy's keyword-only ``namespace=``): "" none,
+    None when not known statically."""
+    value = next((k.value for k in call.keywords if k.arg == "namespace"), None)
+    if value is None or isinstance(value, ast.Constant) and value.value is None:
+        return ""
+    return _str_of(value, consts)
+
+
+def _own_arguments_rename(call: ast.Call) -> bool:
+    """Whether the node's own ``cli_args`` may rename it: not a literal list (computed), or one
+    with a ``__node:=``/``__ns:=`` rule."""
+    value = next((k.value for k in call.keywords if k.arg == "cli_args"), None)
+    if value is None or isinstance(value, ast.Constant) and value.value is None:
+        return False
+    if not isinstance(value, (ast.List, ast.Tuple)):
+        return True
+    return any(not isinstance(e, ast.Constant) or isinstance(e.value, str) and _CODE_REMAP.search(e.value)
+               for e in value.elts)
 
 
 _MAX_FOLLOWED = 8  # imported classes read per file for the node they make

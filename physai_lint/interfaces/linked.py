@@ -27,7 +27,7 @@ from collections.abc import Callable, Iterable
 from typing import Any
 
 from .cpp_scopes import CppFacts, blank_code
-from .extract_cpp import _everything, _file_interface, member_initialisers, merge_facts, skim, tokenize
+from .extract_cpp import _MAKE, _everything, _file_interface, member_initialisers, merge_facts, skim, tokenize
 from .model import NodeInterface
 
 Reader = Callable[[str], "str | None"]
@@ -49,9 +49,10 @@ def extract_linked(own: list[tuple[str, str]], library: list[tuple[str, str]], r
     a linked library brings), with ``roots`` the classes known to run (a component's plugin
     class, qualified or not); ``read`` reads the headers the sources include."""
     own_parts = [part for path, text in own for part in _facts(path, text, cache, read)]
+    lib_parts = [(text, part) for path, text in library for part in _facts(path, text, cache, read)]
+    own_parts += _header_node_sites(own, own_parts + [part for _, part in lib_parts], cache, read)
     if not library:
         return merge_facts([(part, _everything) for part in own_parts])
-    lib_parts = [(text, part) for path, text in library for part in _facts(path, text, cache, read)]
     holders = {owner for _, part in lib_parts for owner in _owners(part) if owner is not None}
     runs = _running_classes(own, lib_parts, roots, read, holders)
     # Sure of what runs: a class that declares something, or a root whose code is known (a
@@ -64,6 +65,36 @@ def extract_linked(own: list[tuple[str, str]], library: list[tuple[str, str]], r
         return owner in runs
 
     return merge_facts([(part, _everything) for part in own_parts] + [(part, keep) for _, part in lib_parts])
+
+
+def _header_node_sites(own: list[tuple[str, str]], parts: list[CppFacts], cache: Any,
+                       read: Reader | None) -> list[CppFacts]:
+    """Where the classes the sources construct (``make_shared<Worker>()``) but do not define make
+    their node, read from the package's own headers the sources include: a header-only node
+    class (``Worker() : Node("worker")`` in ``include/demo/worker.hpp``) names the node. Only
+    those places are taken (the header's other items are not the executable's for sure)."""
+    known = {cls for part in parts for cls, _, _ in part.classes}
+    # (a main() that only constructs its node has no call word: extraction did not read it)
+    wanted = {m.group(1) for _, text in own for m in _MAKE.finditer(text)} - known
+    if not wanted or read is None:
+        return []
+    out: list[CppFacts] = []
+    budget = _MAX_INCLUDES
+    for path, text in own:
+        for include in _INCLUDE.findall(text):
+            if budget <= 0 or not wanted:
+                return out
+            budget -= 1
+            found = _read_include(path, include, read)
+            if found is None:
+                continue
+            header = _file_interface(*found, cache)
+            defined = wanted & {cls for cls, _, _ in header.classes}
+            if defined:
+                out.append(CppFacts(node_sites=[s for s in header.node_sites if s[3] in defined],
+                                    makes=list(header.makes)))
+                wanted -= defined
+    return out
 
 
 def _facts(path: str, text: str, cache: Any, read: Reader | None) -> list[CppFacts]:

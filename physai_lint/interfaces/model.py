@@ -79,6 +79,9 @@ class NodeInterface:
     node_name: str | None = None
     node_name_span: Span | None = None
     node_name_decided: bool = False
+    # the namespace the code gives that node (``Node("driver", "robot1")``, rclpy
+    # ``namespace='robot1'``), which stands when launch gives none: "" when it gives none
+    node_namespace: str = ""
 
     def endpoints(self, kind: str) -> list[Endpoint]:
         return list(getattr(self, kind) or [])
@@ -111,20 +114,21 @@ LIFECYCLE_ENDPOINTS: tuple[tuple[str, str, str], ...] = (
 
 # A place the code makes a node: (its name, or None when not known statically; when that argument
 # only passes on the name a constructor was given, that constructor's class ("" outside a class),
-# else None; where)
-NodeSite = tuple[str | None, str | None, Span | None]
+# else None; where; the namespace the code gives it: "" none, None not known statically)
+NodeSite = tuple[str | None, str | None, Span | None, str | None]
 
 
 def decide_node_name(iface: NodeInterface, sites: list[NodeSite],
                      makes: list[tuple[str, str | None, Span | None]] = ()) -> None:  # type: ignore[assignment]
-    """Set ``iface``'s node name from the places its code makes a node. No place: no word on it.
-    A name a constructor passes on (``Node(node_name)``) is the literal the code constructs that
-    class with (``makes``: class, name or None when not a literal, where;
-    ``make_shared<LifecycleTalker>("lc_talker")``).
-    Then one literal name, wherever it is written: that name. Several names, a computed one, or
-    only names passed on from a caller not seen: decided, not known. A name passed on is left
-    aside when a literal one is written elsewhere (the subclass's ``super().__init__('planner')``
-    names the node its base class makes)."""
+    """Set ``iface``'s node name (and the namespace its code gives the node) from the places its
+    code makes a node. No place: no word on it. A name a constructor passes on
+    (``Node(node_name)``) is the literal the code constructs that class with (``makes``: class,
+    name or None when not a literal, where; ``make_shared<LifecycleTalker>("lc_talker")``).
+    Then one literal name, wherever it is written, with one namespace: that name. Several names, a
+    computed one or namespace, a name the code remaps itself (``-r __node:=`` in its own
+    arguments, which rcl applies before launch's), or only names passed on from a caller not seen:
+    decided, not known. A name passed on is left aside when a literal one is written elsewhere
+    (the subclass's ``super().__init__('planner')`` names the node its base class makes)."""
     if not sites:
         return
     iface.node_name_decided = True
@@ -132,16 +136,20 @@ def decide_node_name(iface: NodeInterface, sites: list[NodeSite],
     for cls, name, span in makes:
         given.setdefault(cls, []).append((name, span))
     resolved: list[NodeSite] = []
-    for name, passed, span in sites:
+    for name, passed, span, ns in sites:
         if passed and passed in given:
-            resolved.extend((n, None, s) for n, s in given[passed])
+            resolved.extend((n, None, s, ns) for n, s in given[passed])
         else:
-            resolved.append((name, passed, span))
-    named = {n for n, _, _ in resolved if n is not None}
-    if len(named) != 1 or any(n is None and passed is None for n, passed, _ in resolved):
+            resolved.append((name, passed, span, ns))
+    named = {n for n, _, _, _ in resolved if n is not None}
+    if len(named) != 1 or any(n is None and passed is None for n, passed, _, _ in resolved):
         return
-    iface.node_name = named.pop()
-    iface.node_name_span = next(s for n, _, s in resolved if n == iface.node_name)
+    name = named.pop()
+    namespaces = {ns for n, _, _, ns in resolved if n == name}
+    if len(namespaces) != 1 or None in namespaces:
+        return
+    iface.node_name, iface.node_namespace = name, namespaces.pop()
+    iface.node_name_span = next(s for n, _, s, _ in resolved if n == name)
 
 
 def with_lifecycle_endpoints(iface: Any) -> Any:

@@ -16,7 +16,7 @@ import os
 from collections.abc import Iterable
 from typing import Any
 
-from physai_lint.resolve.names import join_fqn
+from physai_lint.resolve.names import join_fqn, make_namespace_absolute
 
 _NAMED_KINDS = frozenset({"node", "lifecycle_node", "composable_node"})
 
@@ -28,16 +28,26 @@ def apply_default_names(launches: Iterable[Any], interfaces: Any) -> None:
         return
     for launch in launches:
         for node in launch.nodes:
-            if node.name is not None or node.name_explicit or node.kind not in _NAMED_KINDS \
-                    or node.active is False or not node.package or not node.executable:
+            if node.kind not in _NAMED_KINDS or node.active is False or not node.package \
+                    or not node.executable or node.name_source is not None:
                 continue
+            unnamed = node.name is None and not node.name_explicit
+            if not unnamed and node.namespace_explicit:
+                continue  # launch names it and places it: nothing the code says changes that
             iface = interfaces.get(node.package, node.executable)
             name = getattr(iface, "node_name", None)
             if not name:
                 continue
-            node.name = name
-            node.fqn = join_fqn(node.namespace, name) if node.namespace else None
-            node.name_source = _source(iface)
+            if not node.namespace_explicit and node.namespace == "/" and iface.node_namespace:
+                # launch adds -r __ns:= only for a namespace it is given or has pushed
+                # (launch_ros Node._perform_substitutions): the code's own one stands
+                node.namespace = make_namespace_absolute(iface.node_namespace)
+                if node.name is not None:
+                    node.fqn = join_fqn(node.namespace, node.name) if node.namespace else None
+            if unnamed:
+                node.name = name
+                node.fqn = join_fqn(node.namespace, name) if node.namespace else None
+                node.name_source = _source(iface)
 
 
 def _source(iface: Any) -> str:

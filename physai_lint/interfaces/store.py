@@ -270,6 +270,7 @@ def merge(layers: Iterable[NodeInterface]) -> NodeInterface | None:
     named = next((layer for layer in layers if layer.node_name_decided), None)
     if named is not None:
         out.node_name, out.node_name_span, out.node_name_decided = named.node_name, named.node_name_span, True
+        out.node_namespace = named.node_namespace
     return out
 
 

@@ -101,3 +101,46 @@ def test_python_follows_the_package_modules_whose_node_classes_the_entry_constru
                        files.get)
     assert (iface.node_name, iface.node_name_decided) == (None, True)
     assert extract_py([("/ws/src/pybot/pybot/main.py", main)]).node_name_decided is False  # not read
+
+
+def _cpp_ns(*sources: str) -> tuple[str | None, str]:
+    iface = extract_cpp([(f"/ws/src/f{i}.cpp", s) for i, s in enumerate(sources)])
+    return iface.node_name, iface.node_namespace
+
+
+def test_cpp_the_namespace_the_code_gives():
+    assert _cpp_ns('auto n = std::make_shared<rclcpp::Node>("driver", "robot1");') == ("driver", "robot1")
+    assert _cpp_ns('A::A(const rclcpp::NodeOptions & options) : Node("a", options) {}') == ("a", "")
+    assert _cpp_ns('A::A() : nav2_util::LifecycleNode("amcl", "", rclcpp::NodeOptions()) {}') == ("amcl", "")
+    assert _cpp_ns('A::A(std::string ns) : Node("a", ns) {}') == (None, "")  # not known
+
+
+def test_a_name_the_code_remaps_itself_is_not_known():
+    # rcl applies the node's own arguments before launch's: the node is /camera_driver
+    source = ('auto options = rclcpp::NodeOptions().arguments({"--ros-args", "-r", "__node:=camera_driver"});\n'
+              'auto node = std::make_shared<rclcpp::Node>("placeholder", options);\n')
+    assert _cpp(source) == (None, True)
+    assert _py("node = rclpy.create_node('placeholder', cli_args=['--ros-args', '-r', '__node:=real'])\n") == (
+        None, True)
+    assert _py("node = rclpy.create_node('placeholder', cli_args=ARGS)\n") == (None, True)
+
+
+def test_python_namespace():
+    iface = extract_py([("/ws/p.py", "from rclpy.node import Node\n\n\nclass S(Node):\n    def __init__(self):\n"
+                                     "        super().__init__('server', namespace='arm')\n")])
+    assert (iface.node_name, iface.node_namespace) == ("server", "arm")
+
+
+def test_cpp_a_header_only_node_class_the_sources_construct():
+    from physai_lint.interfaces.linked import extract_linked
+
+    header = ('#include <rclcpp/rclcpp.hpp>\nclass Worker : public rclcpp::Node {\n public:\n'
+              '  Worker() : Node("worker") {}\n};\n')
+    main = ('#include "demo/worker.hpp"\nint main() {\n  auto w = std::make_shared<Worker>();\n'
+            '  auto helper = rclcpp::Node::make_shared("worker_helper");\n}\n')
+    files = {"/ws/src/demo/include/demo/worker.hpp": header}
+    iface = extract_linked([("/ws/src/demo/src/worker_main.cpp", main)], [], [], None, files.get)
+    assert (iface.node_name, iface.node_name_decided) == (None, True)  # two nodes: /worker, /worker_helper
+    alone = main.replace('  auto helper = rclcpp::Node::make_shared("worker_helper");\n', "")
+    iface = extract_linked([("/ws/src/demo/src/worker_main.cpp", alone)], [], [], None, files.get)
+    assert iface.node_name == "worker"

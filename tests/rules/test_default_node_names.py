@@ -202,3 +202,21 @@ def test_a_lifecycle_manager_finds_a_node_by_its_default_name(demo_findings):
     found = demo_findings({"launch/a.launch.py": LIFECYCLE_LAUNCH}, "launch/a.launch.py", "S201")
     assert [(line, message.split(";")[0]) for line, message in found] == [
         (9, 'lifecycle manager /lifecycle_manager_map manages "amcl" (/amcl) but no such node is launched')]
+
+
+NAMESPACED_IN_CODE = TALKER.replace('Node("talker", options)', 'Node("talker", "robot1", options)')
+
+
+def test_the_namespace_the_code_gives_stands_when_launch_gives_none(demo_package):
+    plain = _launch("Node(package='demo', executable='talker', parameters=[params])")
+    assert _check(demo_package, NAMESPACED_IN_CODE, plain, "/robot1/talker:\n  ros__parameters:\n    rate: 2.0\n",
+                  "P103") == []
+    found = _check(demo_package, NAMESPACED_IN_CODE, plain, "talker:\n  ros__parameters:\n    rate: 2.0\n", "P103")
+    assert len(found) == 1 and '"/robot1/talker"' in found[0][1]
+    # launch's namespace= replaces it (-r __ns:=)
+    assert _check(demo_package, NAMESPACED_IN_CODE, _launch(NAMESPACED.replace("robot1", "r2")),
+                  "/r2/talker:\n  ros__parameters:\n    rate: 2.0\n", "P103") == []
+    # and so for a node launch names but does not place
+    named = _launch("Node(package='demo', executable='talker', name='speaker', parameters=[params])")
+    found = _check(demo_package, NAMESPACED_IN_CODE, named, "speaker:\n  ros__parameters:\n    rate: 2.0\n", "P103")
+    assert len(found) == 1 and '"/robot1/speaker"' in found[0][1]

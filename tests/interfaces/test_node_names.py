@@ -126,8 +126,9 @@ def test_a_name_the_code_remaps_itself_is_not_known():
 
 
 def test_python_namespace():
-    iface = extract_py([("/ws/p.py", "from rclpy.node import Node\n\n\nclass S(Node):\n    def __init__(self):\n"
-                                     "        super().__init__('server', namespace='arm')\n")])
+    source = ("from rclpy.node import Node\n\n\nclass S(Node):\n    def __init__(self):\n"
+              "        super().__init__('server', namespace='arm')\n")
+    iface = extract_py([("/ws/p.py", source)])
     assert (iface.node_name, iface.node_namespace) == ("server", "arm")
 
 

@@ -24,8 +24,8 @@ YAML = """launch:
 def test_literal_text_is_a_string_and_substituted_text_fails(demo_findings):
     found = demo_findings({"launch/a.launch.xml": XML}, "launch/a.launch.xml", "P106")
     assert [(line, message.split(";")[0]) for line, message in found] == [
-        (5, 'parameter "services_glob" value "[*]" is not valid YAML (did not find expected alphabetic or '
-            'numeric character)'),
+        (5, ('parameter "services_glob" value "[*]" is not valid YAML (did not find expected alphabetic or '
+             'numeric character)')),
         (6, 'parameter "mixed" value "[1, \'a\']" is a list with items of different types'),
     ]
     assert demo_findings({"launch/a.launch.yaml": YAML}, "launch/a.launch.yaml", "P106") == []

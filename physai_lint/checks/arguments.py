@@ -40,6 +40,13 @@ def undefined_configuration(ctx: CheckContext) -> Iterator[Diagnostic]:
                 key=read.name)
 
 
+# Configurations launch itself reads for every process it executes: ExecuteLocal's 'emulate_tty'
+# override (launch/actions/execute_local.py :: __execute_process) and the Executable's default
+# prefix (launch/descriptions/executable.py: LaunchConfiguration('launch-prefix', default=''),
+# 'launch-prefix-filter').
+_READ_BY_EVERY_PROCESS = frozenset({"emulate_tty", "launch-prefix", "launch-prefix-filter"})
+
+
 @rule("L102", "unused-argument")
 def unused_argument(ctx: CheckContext) -> Iterator[Diagnostic]:
     seen: set[object] = set()
@@ -48,6 +55,8 @@ def unused_argument(ctx: CheckContext) -> Iterator[Diagnostic]:
         # a file including one that cannot be read (missing: L105) may hand it its arguments
         opaque_files |= {i.file for i in launch.includes if i.status not in ("ok", "cycle") and i.active is not False}
         read_names = {r.name for r in launch.config_reads}
+        if any(n.kind != "composable_node" and n.active is not False for n in launch.nodes):
+            read_names |= _READ_BY_EVERY_PROCESS
         # a file of this launch that reads the whole context.launch_configurations reads them all
         reads_all = any(EVERY_CONFIGURATION in _escaped(ctx, f) for f in launch.files)
         for arg in launch.declared_args:

@@ -15,14 +15,11 @@ def undefined_configuration(ctx: CheckContext) -> Iterator[Diagnostic]:
     seen: set[object] = set()
     for launch in ctx.launches:
         declared = sorted({a.name for a in launch.declared_args})
-        # An include the linter cannot read may set any configuration (includes do not scope), so
-        # reads after it in the same file are unknown (autoware's agnocast_env sets container_package).
-        blind = [(r.span.file, r.span.line) for r in launch.includes
-                 if r.status not in ("ok", "cycle") and r.active is not False]
+        # (a read after an include the linter cannot read, or an action it cannot follow, in
+        # the same file counts as defined: that may set any configuration, and includes do not
+        # scope them; autoware's agnocast_env sets container_package)
         for read in launch.config_reads:
             if read.defined or read.has_default or read.active is False or read.span in seen:
-                continue
-            if any(f == read.span.file and line < read.span.line for f, line in blind):
                 continue
             # A read in a file whose includer passed this name is fine; resolution saw it defined.
             seen.add(read.span)

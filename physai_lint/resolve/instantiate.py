@@ -91,11 +91,19 @@ class Instantiator:
         self.ev.on_dirname = self._on_dirname
         self.nodes = NodeBuilder(self)
         self.visited: dict[str, bool | None] = {}
+        # the files in which an action or include the linter cannot follow ran: it may have
+        # declared or set any launch configuration their later reads ask for (includes and opaque
+        # functions do not scope them). Reads in other files stay checked: in a large system
+        # (Autoware) some include is always outside the workspace, and a configuration its
+        # includer reads after it is the includer's mistake far more often than its doing.
+        self.configs_open: set[str] = set()
 
     # ---- hooks -------------------------------------------------------------------------------
     def _on_read(self, name: str, span: Span | None, defined: bool, has_default: bool) -> None:
         if span is None:
             return
+        # after an action or include the linter cannot follow, "nothing set it" is not known
+        defined = defined or self.frame.file in self.configs_open
         self.result.config_reads.append(ConfigRead(name, span, defined, has_default, self.frame.active))
         for arg in self.declared_by_name.get(name, ()):
             arg.reads += 1
@@ -216,6 +224,8 @@ class Instantiator:
         elif isinstance(a, ir.OpaqueAction):
             if a.reason:
                 self.result.opaque.append((a.span, a.reason))
+                if self.frame.active is not False:
+                    self.configs_open.add(self.frame.file)  # its actions may set any configuration
             for value in a.other:
                 self.ev.eval(value, scope)
             self._walk(a.actions, scope)
@@ -319,7 +329,11 @@ class Instantiator:
     def _include(self, a: ir.Include, scope: Scope) -> None:
         from physai_lint.resolve.includes import include
 
+        before = len(self.result.includes)
         include(self, a, scope)
+        rec = self.result.includes[before] if len(self.result.includes) > before else None
+        if rec is not None and rec.status not in ("ok", "cycle") and rec.active is not False:
+            self.configs_open.add(self.frame.file)  # the file it names may set any configuration
 
     # ---- deferred: timers and event handlers -----------------------------------------------------
     def _timer(self, a: ir.Timer, scope: Scope) -> None:

@@ -169,6 +169,9 @@ def _nav2(o: LObj, n: str, s: Span) -> V.Subst:
         convert if isinstance(convert, bool) else None, s)
 
 
+UNSET_CONFIGURATION = "\x00(unset)"  # what LaunchConfigurationEquals compares an unset configuration as
+
+
 def to_condition(c: Any, span: Span) -> Condition | None:
     if c is None:
         return None
@@ -179,10 +182,14 @@ def to_condition(c: Any, span: Span) -> Condition | None:
             pred = to_value(c.arg(0, "predicate_expression"), c.arg_span(0, "predicate_expression"))
             return Condition("if" if n == "IfCondition" else "unless", pred, c.span, raw)
         if n in ("LaunchConfigurationEquals", "LaunchConfigurationNotEquals"):
+            # An unset configuration does not raise here: _predicate_func catches the KeyError and
+            # compares "unset" with the expected value, true only for expected_value=None (launch
+            # conditions/launch_configuration_equals.py). Both sides use one text no value has.
             name = to_value(c.arg(0, "launch_configuration_name"), c.arg_span(0, "launch_configuration_name"))
-            expected = opt_value(c, 1, "expected_value") or (V.Text("", c.span),)
+            expected = opt_value(c, 1, "expected_value") or (V.Text(UNSET_CONFIGURATION, c.span),)
             op = "equals" if n.endswith("Equals") and "Not" not in n else "not-equals"
-            cmp = V.Compare(op, (V.LaunchConfig(name, None, c.span),), expected, c.span)  # type: ignore[arg-type]
+            read = V.LaunchConfig(name, (V.Text(UNSET_CONFIGURATION, c.span),), c.span)  # type: ignore[arg-type]
+            cmp = V.Compare(op, (read,), expected, c.span)
             return Condition("if", (cmp,), c.span, raw)
         return Condition("if", (V.Unknown(f"condition {n} cannot be evaluated statically", c.span),), c.span, raw)
     reason = c.reason if isinstance(c, Opaque) else f"condition of type {type_name(c)}"

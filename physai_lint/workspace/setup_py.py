@@ -177,6 +177,52 @@ class _Eval:
 _MISSING = object()
 
 
+def _ros2_branch(body: list[ast.stmt]) -> list[ast.stmt]:
+    """``body`` with each module-level ``if ROS_VERSION == 2:`` (or ``int(os.environ['ROS_VERSION'])``,
+    ``os.getenv('ROS_VERSION')``...) replaced by the branch colcon runs on ROS 2, as package.xml's
+    ``condition="$ROS_VERSION == 2"`` is read: packages shared with ROS 1 (carla's) call setup()
+    in both branches."""
+    out: list[ast.stmt] = []
+    for stmt in body:
+        taken = _ros2_test(stmt.test) if isinstance(stmt, ast.If) else None
+        if taken is None:
+            out.append(stmt)
+        else:
+            out.extend(_ros2_branch(stmt.body if taken else stmt.orelse))
+    return out
+
+
+def _ros_version(node: ast.AST) -> bool:
+    """Whether ``node`` reads ROS_VERSION: the name, ``os.environ['ROS_VERSION']``, ``.get(...)``,
+    ``os.getenv(...)``, or ``int``/``str`` of one of those."""
+    if isinstance(node, ast.Name):
+        return node.id == "ROS_VERSION"
+    if isinstance(node, ast.Subscript):
+        return isinstance(node.slice, ast.Constant) and node.slice.value == "ROS_VERSION"
+    if isinstance(node, ast.Call):
+        if isinstance(node.func, ast.Name) and node.func.id in ("int", "str") and len(node.args) == 1:
+            return _ros_version(node.args[0])
+        return bool(node.args) and isinstance(node.args[0], ast.Constant) and node.args[0].value == "ROS_VERSION"
+    return False
+
+
+def _ros2_test(test: ast.AST) -> bool | None:
+    """The value of an ``if`` test comparing ROS_VERSION with a constant, on ROS 2; None for any
+    other test."""
+    if not (isinstance(test, ast.Compare) and len(test.ops) == 1 and _ros_version(test.left)
+            and isinstance(test.comparators[0], ast.Constant)):
+        return None
+    want = test.comparators[0].value
+    have: object = 2 if isinstance(want, int) else "2"
+    ops = {ast.Eq: lambda a, b: a == b, ast.NotEq: lambda a, b: a != b, ast.GtE: lambda a, b: a >= b,
+           ast.Gt: lambda a, b: a > b, ast.LtE: lambda a, b: a <= b, ast.Lt: lambda a, b: a < b}
+    fn = ops.get(type(test.ops[0]))
+    try:
+        return None if fn is None else bool(fn(have, want))
+    except TypeError:
+        return None
+
+
 def _find_setup_call(nodes: list[ast.AST]) -> ast.Call | None:
     for node in nodes:
         if isinstance(node, ast.Call):
@@ -218,6 +264,7 @@ def read_setup_py(pkg_dir: str, pkg_name: str, files: frozenset[str], text: str 
         info.problems.append((path, f"setup.py does not parse: {exc}", getattr(exc, "lineno", 1) or 1))
         return info
     ev = _Eval(pkg_dir, files)
+    tree.body = _ros2_branch(tree.body)
     nodes = ast_nodes(tree)
     setup_call = _find_setup_call(nodes)
     data_files: list[object] | None = None

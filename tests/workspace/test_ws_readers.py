@@ -243,3 +243,28 @@ install(TARGETS filter_node test_filter DESTINATION lib/${PROJECT_NAME})
         "rectify_node": ["rectify.cpp", "filter.cpp", "gps.cpp"],
         "pkg::Rectify": ["rectify.cpp", "filter.cpp", "gps.cpp"]}
     assert info.source_roots == {"rectify_node": ["pkg::Rectify"], "pkg::Rectify": ["pkg::Rectify"]}
+
+
+def test_setup_py_ros_version_branches(tmp_path):
+    # a package shared with ROS 1 calls setup() in both branches: colcon on ROS 2 runs the second
+    for test in ("ROS_VERSION == 2", "int(os.environ['ROS_VERSION']) == 2", "os.getenv('ROS_VERSION') == '2'",
+                 "ROS_VERSION != 1"):
+        text = f"""
+import os
+from glob import glob
+ROS_VERSION = int(os.environ['ROS_VERSION'])
+if ROS_VERSION == 1 and False:
+    pass
+if {test}:
+    from setuptools import setup
+    package_name = 'pkg'
+    setup(name=package_name, packages=[package_name],
+          data_files=[(os.path.join('share', package_name, 'launch'), glob('launch/*.launch.py'))])
+else:
+    from distutils.core import setup
+    setup(name='pkg', packages=['pkg'], package_dir={{'': 'src'}})
+"""
+        info = read_setup_py(str(tmp_path), "pkg", frozenset({"launch/a.launch.py"}), text)
+        assert info.complete, test
+        got = sorted((r.dest, r.source[len(str(tmp_path)) + 1:]) for r in info.rules)
+        assert got == [("share/pkg/launch", "launch/a.launch.py")], test

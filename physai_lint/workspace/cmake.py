@@ -384,6 +384,9 @@ class _Interp:
                         self.info.executables_complete = False
                     else:
                         self.info.executables.add(exe)
+                        if src is not None and src.endswith(".py"):
+                            # a Python node installed as a program: its code is its interface
+                            self.info.sources.setdefault(exe, [src])
         elif mode == "DIRECTORY":
             dirs: list[str] = []
             k = 1

@@ -220,3 +220,56 @@ def test_the_namespace_the_code_gives_stands_when_launch_gives_none(demo_package
     named = _launch("Node(package='demo', executable='talker', name='speaker', parameters=[params])")
     found = _check(demo_package, NAMESPACED_IN_CODE, named, "speaker:\n  ros__parameters:\n    rate: 2.0\n", "P103")
     assert len(found) == 1 and '"/robot1/speaker"' in found[0][1]
+
+
+PROGRAM_CMAKE = """project(demo)
+install(PROGRAMS scripts/tucker.py DESTINATION lib/${PROJECT_NAME})
+install(DIRECTORY launch config DESTINATION share/${PROJECT_NAME})
+"""
+TUCKER = """#!/usr/bin/env python3
+import rclpy
+from rclpy.node import Node
+
+
+class Tucker(Node):
+    def __init__(self):
+        super().__init__('arm_tucker')
+
+
+def main():
+    rclpy.init()
+    rclpy.spin(Tucker())
+"""
+
+
+def test_a_python_script_installed_as_a_cmake_program(demo_package):
+    launch = _launch("Node(package='demo', executable='tucker.py', parameters=[params])")
+    pkg = demo_package({"CMakeLists.txt": PROGRAM_CMAKE, "scripts/tucker.py": TUCKER, "launch/a.launch.py": launch,
+                        "config/talker.yaml": "tucker:\n  ros__parameters:\n    x: 1\n"})
+    opts = CheckOptions(paths=[str(pkg / "launch/a.launch.py")], workspace=str(pkg.parent.parent), cache=False)
+    found = [f.message for f in run_check(opts).findings if f.code == "P103"]
+    assert len(found) == 1 and '("/arm_tucker")' in found[0]
+
+
+LIST_VALUE_LAUNCH = """from launch import LaunchDescription
+from launch_ros.actions import Node
+from launch_ros.substitutions import FindPackageShare
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='demo', executable='tucker.py', parameters=[
+            {'yaml_path': [FindPackageShare('demo'), '/config/left.yaml'], 'names': ['a', 'b']}]),
+    ])
+"""
+TYPED_TUCKER = TUCKER.replace("super().__init__('arm_tucker')",
+                              "super().__init__('arm_tucker')\n        self.declare_parameter('yaml_path', '')\n"
+                              "        self.declare_parameter('names', ['x'])")
+
+
+def test_a_list_of_a_substitution_and_strings_is_one_string(demo_package):
+    # launch_ros normalize_parameter_value: [FindPackageShare('demo'), '/config/left.yaml'] is a path
+    pkg = demo_package({"CMakeLists.txt": PROGRAM_CMAKE, "scripts/tucker.py": TYPED_TUCKER,
+                        "launch/a.launch.py": LIST_VALUE_LAUNCH})
+    opts = CheckOptions(paths=[str(pkg / "launch/a.launch.py")], workspace=str(pkg.parent.parent), cache=False)
+    assert [f.message for f in run_check(opts).findings if f.code == "P105"] == []

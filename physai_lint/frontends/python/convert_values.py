@@ -208,6 +208,10 @@ def to_pvalue(v: Any, span: Span) -> PValue:
             spans = item_spans(v)
             items = tuple(spans) if isinstance(spans, list) and len(spans) == len(v) else None
             return PLit(tuple(str(x) if isinstance(x, str) else x for x in v), span, items)
+        if _one_string(v):
+            # launch_ros normalize_parameter_value: a list with a substitution whose other items are
+            # strings (or lists of substitutions) is one string: [FindPackageShare('p'), '/a.yaml']
+            return PSubst(to_value(v, span), None, span)
         return PList(tuple(to_pvalue(x, span_at(v, i, span)) for i, x in enumerate(v)), span)
     if isinstance(v, LObj) and v.qual.endswith(".ParameterValue"):
         inner = v.arg(0, "value")
@@ -225,6 +229,20 @@ def to_pvalue(v: Any, span: Span) -> PValue:
     if isinstance(v, KPath) or (isinstance(v, LObj) and api.is_substitution(v.qual)):
         return PSubst(to_value(v, span), None, span)
     return PUnknown(f"parameter value of type {type_name(v)}", span)
+
+
+def _is_substitution(x: Any) -> bool:
+    return isinstance(x, LObj) and api.is_substitution(x.qual)
+
+
+def _one_string(v: list[Any] | tuple[Any, ...]) -> bool:
+    """Whether a parameter's list value is one string to launch_ros: at least one substitution,
+    every other item a str (one at description time too) or a list of substitutions and strs."""
+    def text(x: Any) -> bool:
+        return isinstance(x, (str, SymStr)) or _is_substitution(x)
+
+    return any(_is_substitution(x) for x in v) and all(
+        text(x) or isinstance(x, (list, tuple)) and all(text(y) for y in x) for x in v)
 
 
 def _flatten(d: dict[Any, Any], prefix: str, span: Span, out: list[ParamEntry]) -> bool:

@@ -19,8 +19,9 @@ import bisect
 import re
 from dataclasses import dataclass, field
 
-from .model import Endpoint, ParamDecl
 from physai_lint.model.span import Span
+
+from .model import Endpoint, ParamDecl
 
 Scope = tuple[str | None, int, int]  # (class or None, start offset, end offset)
 
@@ -127,20 +128,23 @@ def _head_start(text: str, region: int, q: int, starts: list[int], ends: list[in
     return region if j < 0 else j + 1
 
 
-def blank_code(text: str, a: int, b: int, starts: list[int], ends: list[int]) -> str:
+def blank_code(text: str, a: int, b: int, starts: list[int], ends: list[int],
+               keep_offsets: bool = False) -> str:
     """``text[a:b]`` with each comment, string and preprocessor line in it (``starts``/``ends``:
-    the skim's) made one blank, and no blanks at its end."""
+    the skim's) made one blank, and no blanks at its end; with ``keep_offsets``, made blanks of
+    its length instead, the end kept (offsets into the result are those into ``text``, less a)."""
     k = bisect.bisect_right(starts, a) - 1
     if k < 0 or ends[k] <= a:
         k += 1
     parts, pos = [], a
     while k < len(starts) and starts[k] < b:
         parts.append(text[pos:max(starts[k], a)])
-        parts.append(" ")
-        pos = min(ends[k], b)
+        end = min(ends[k], b)
+        parts.append(" " * (end - max(starts[k], a)) if keep_offsets else " ")
+        pos = end
         k += 1
     parts.append(text[pos:b])
-    return "".join(parts).rstrip()
+    return "".join(parts) if keep_offsets else "".join(parts).rstrip()
 
 
 def _depth0(h: str, p: int) -> bool:
@@ -184,25 +188,8 @@ _LAST_IDENT = re.compile(r"(\w+)\s*$")
 _BRACELESS = re.compile(r"\s*(?:else\b|if\b)")
 
 
-def code_only(text: str, a: int, b: int, starts: list[int], ends: list[int]) -> str:
-    """``text[a:b]`` with each comment, string and preprocessor line made blanks of its length
-    (offsets are kept)."""
-    k = bisect.bisect_right(starts, a) - 1
-    if k < 0 or ends[k] <= a:
-        k += 1
-    parts, pos = [], a
-    while k < len(starts) and starts[k] < b:
-        parts.append(text[pos:max(starts[k], a)])
-        end = min(ends[k], b)
-        parts.append(" " * (end - max(starts[k], a)))
-        pos = end
-        k += 1
-    parts.append(text[pos:b])
-    return "".join(parts)
-
-
 def conditional_blocks(code: str) -> list[tuple[int, int]]:
-    """The (open, close) offsets in ``code`` (``code_only``'s) of the blocks that run only when a
+    """The (open, close) offsets in ``code`` (``blank_code``'s, offsets kept) of the blocks that run only when a
     condition the code tests holds: the bodies of ``if``, ``else`` and ``switch``."""
     out: list[tuple[int, int]] = []
     stack: list[tuple[int, bool]] = []

@@ -28,15 +28,15 @@ from physai_lint.model.span import Span
 
 from .cpp_scopes import (
     CppFacts,
+    blank_code,
     braceless_conditional,
-    code_only,
     conditional_blocks,
     owner_at,
     preprocessor_branches,
     scopes,
 )
 from .cpp_scopes import _inside as _in_skimmed
-from .model import CODE_CONDITION, Endpoint, NodeInterface, NodeSite, ParamDecl, decide_node_name
+from .model import CODE_CONDITION, CODE_REMAP, Endpoint, NodeInterface, NodeSite, ParamDecl, decide_node_name
 
 MAX_SOURCE = 2_000_000
 
@@ -1047,7 +1047,7 @@ class _Collector:
             return False
         if k not in self._blocks:
             _, a, b = self.scopes[k]
-            code = code_only(view.text, a, b, view.starts, view.ends)
+            code = blank_code(view.text, a, b, view.starts, view.ends, keep_offsets=True)
             self._blocks[k] = (code, conditional_blocks(code))
         code, blocks = self._blocks[k]
         at = p - self.scopes[k][1]
@@ -1196,8 +1196,6 @@ _STRING_ARG = re.compile(r'\s*(?:std\s*::\s*)?string\s*[({]\s*"((?:[^"\\\n]|\\.)
 _DECLARATION_ARG = re.compile(r"\s*(?:\)|(?:const|volatile)\b|[\w:<>]+\s*[&*]+\s*\w|[\w:<>]+\s+\w+\s*[,)=])")
 
 
-# a node's own arguments renaming it: rcl applies them before the command line's (launch's)
-_CODE_REMAP = re.compile(r"__(?:node|name|ns):=")
 
 
 _NAMESPACE_WORD = re.compile(r"(?i)(?:^|[_.>:\s])(?:ns|name_?space)(?:$|_|\b)")
@@ -1271,7 +1269,7 @@ def _node_sites(path: str, view: _Whole | _Windows, consts: _Constants, out: _Co
             r"\b(?:string|char|auto)\s*(?:const\s*)?[&*]?\s*" + re.escape(word) + r"\s*[,)=]",
             text[max(0, p - 4000):p]) is not None
         out.node_site(None, passed, span, ns)
-    for m in _CODE_REMAP.finditer(text):  # ``NodeOptions().arguments({"--ros-args", "-r", "__node:=x"})``
+    for m in CODE_REMAP.finditer(text):  # ``NodeOptions().arguments({"--ros-args", "-r", "__node:=x"})``
         out.at(m.start())
         out.node_site(None, False, _text_span(path, text, m.start(), m.end()), "")
     _makes(path, text, inside, out.facts)

@@ -12,14 +12,21 @@ from __future__ import annotations
 
 import ast
 import posixpath
-import re
 from collections.abc import Callable
 from typing import Any
 
 from physai_lint.model.span import Span
 from physai_lint.pyast import ast_nodes
 
-from .model import CODE_CONDITION, Endpoint, NodeInterface, NodeSite, ParamDecl, decide_node_name
+from .model import (
+    CODE_CONDITION,
+    CODE_REMAP,
+    Endpoint,
+    NodeInterface,
+    NodeSite,
+    ParamDecl,
+    decide_node_name,
+)
 
 MAX_SOURCE = 2_000_000
 Reader = Callable[[str], "str | None"]
@@ -276,12 +283,9 @@ def _node_sites(path: str, tree: ast.Module, imports: dict[str, str], consts: di
 
     visit(tree, None, frozenset())
     for node in ast.walk(tree):  # a remap of the node's own name anywhere (a cli_args list built apart)
-        if isinstance(node, ast.Constant) and isinstance(node.value, str) and _CODE_REMAP.search(node.value):
+        if isinstance(node, ast.Constant) and isinstance(node.value, str) and CODE_REMAP.search(node.value):
             sites.append(((None, None, _span(path, node), ""), None))
     return sites, makes
-
-
-_CODE_REMAP = re.compile(r"__(?:node|name|ns):=")
 
 
 def _namespace_of(call: ast.Call, consts: dict[str, str]) -> str | None:
@@ -301,7 +305,7 @@ def _own_arguments_rename(call: ast.Call) -> bool:
         return False
     if not isinstance(value, (ast.List, ast.Tuple)):
         return True
-    return any(not isinstance(e, ast.Constant) or isinstance(e.value, str) and _CODE_REMAP.search(e.value)
+    return any(not isinstance(e, ast.Constant) or isinstance(e.value, str) and CODE_REMAP.search(e.value)
                for e in value.elts)
 
 

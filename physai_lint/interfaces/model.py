@@ -1,6 +1,8 @@
 """What a node's code declares: topics, services, actions and parameters."""
 from __future__ import annotations
 
+import re
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from typing import Any, Literal
 
@@ -112,6 +114,10 @@ LIFECYCLE_ENDPOINTS: tuple[tuple[str, str, str], ...] = (
 )
 
 
+# A node's own arguments renaming it (``NodeOptions().arguments({"--ros-args", "-r",
+# "__node:=x"})``, rclpy ``cli_args``): rcl applies them before the command line's (launch's).
+CODE_REMAP = re.compile(r"__(?:node|name|ns):=")
+
 # A place the code makes a node: (its name, or None when not known statically; when that argument
 # only passes on the name a constructor was given, that constructor's class ("" outside a class),
 # else None; where; the namespace the code gives it: "" none, None not known statically)
@@ -119,7 +125,7 @@ NodeSite = tuple[str | None, str | None, Span | None, str | None]
 
 
 def decide_node_name(iface: NodeInterface, sites: list[NodeSite],
-                     makes: list[tuple[str, str | None, Span | None]] = ()) -> None:  # type: ignore[assignment]
+                     makes: Iterable[tuple[str, str | None, Span | None]] = ()) -> None:
     """Set ``iface``'s node name (and the namespace its code gives the node) from the places its
     code makes a node. No place: no word on it. A name a constructor passes on
     (``Node(node_name)``) is the literal the code constructs that class with (``makes``: class,

@@ -63,8 +63,7 @@ def _source(iface: Any) -> str:
 
 def default_named(node: Any) -> bool:
     """Whether ``node``'s name is its code's default (``apply_default_names`` gave it)."""
-    return node.name is not None and not node.name_explicit and node.name_source is not None \
-        and node.name_source.startswith("the name its code gives it")
+    return node.name is not None and not node.name_explicit and node.name_source is not None
 
 
 def name_note(nodes: Iterable[Any]) -> str:

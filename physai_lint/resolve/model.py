@@ -113,7 +113,7 @@ class NodeInstance:
     in_timer: bool = False  # launched from a TimerAction (lost the group's namespace/remaps)
     timer_lost: tuple[str, ...] = ()  # what the timer made it lose ("namespace /r1", "remap a:=b")
     spans: dict[str, Span] = field(default_factory=dict)  # "package", "executable", "name", ...
-    name_source: str | None = None  # e.g. 'launch argument "robot" (default "r1")'
+    name_source: str | None = None  # set when the name is the one its code gives it (interfaces/naming.py)
     namespace_source: str | None = None
     package_from_config: bool = False  # the package name came from a launch configuration
 

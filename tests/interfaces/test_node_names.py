@@ -9,8 +9,12 @@ from physai_lint.interfaces.extract_py import extract_py
 from physai_lint.interfaces.store import parse_interfaces_file
 
 
+def _cpp_iface(*sources: str):
+    return extract_cpp([(f"/ws/src/f{i}.cpp", s) for i, s in enumerate(sources)])
+
+
 def _cpp(*sources: str) -> tuple[str | None, bool]:
-    iface = extract_cpp([(f"/ws/src/f{i}.cpp", s) for i, s in enumerate(sources)])
+    iface = _cpp_iface(*sources)
     return iface.node_name, iface.node_name_decided
 
 
@@ -104,7 +108,7 @@ def test_python_follows_the_package_modules_whose_node_classes_the_entry_constru
 
 
 def _cpp_ns(*sources: str) -> tuple[str | None, str]:
-    iface = extract_cpp([(f"/ws/src/f{i}.cpp", s) for i, s in enumerate(sources)])
+    iface = _cpp_iface(*sources)
     return iface.node_name, iface.node_namespace
 
 

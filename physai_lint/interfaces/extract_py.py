@@ -13,6 +13,7 @@ from __future__ import annotations
 import ast
 import posixpath
 from collections.abc import Callable
+from functools import lru_cache
 from typing import Any
 
 from physai_lint.model.span import Span
@@ -29,6 +30,7 @@ from .model import (
 )
 
 MAX_SOURCE = 2_000_000
+_AST = ast.AST
 Reader = Callable[[str], "str | None"]
 
 _CALLS = {
@@ -182,13 +184,14 @@ def extract_py(files: list[tuple[str, str]], read: Reader | None = None) -> Node
         except (SyntaxError, ValueError, RecursionError, MemoryError):
             continue
         try:
-            imports, consts = _extract_one(path, tree, iface)
-            found, made = _node_sites(path, tree, imports, consts)
+            nodes = ast_nodes(tree)
+            imports, consts = _extract_one(path, tree, iface, nodes)
+            found, made = _node_sites(path, tree, imports, consts, nodes)
             sites.extend(site for site, _ in found)
             makes.extend(made)
-            defined = {c.name for c in ast.walk(tree) if isinstance(c, ast.ClassDef)}
+            defined = {c.name for c in nodes if isinstance(c, ast.ClassDef)}
             if read is not None:
-                sites.extend(_imported_node_sites(path, tree, {c for c, _, _ in made} - defined, read))
+                sites.extend(_imported_node_sites(path, nodes, {c for c, _, _ in made} - defined, read))
         except RecursionError:
             continue
     decide_node_name(iface, sites, makes)
@@ -206,10 +209,11 @@ _NODE_MAKERS = _NODE_CLASSES | {"rclpy.create_node"}
 _NOT_A_SITE = ast.Pass()
 
 
-def _node_classes(tree: ast.Module, imports: dict[str, str]) -> set[str]:
-    """The classes of the file derived from a node class: rclpy's, one of the file's own, or an
-    imported one whose name ends in ``Node`` (a package's own base class)."""
-    classes = [n for n in ast.walk(tree) if isinstance(n, ast.ClassDef)]
+def _node_classes(nodes: list[ast.AST], imports: dict[str, str]) -> set[str]:
+    """The classes of the file (``nodes``: its syntax tree's) derived from a node class: rclpy's,
+    one of the file's own, or an imported one whose name ends in ``Node`` (a package's own base
+    class)."""
+    classes = [n for n in nodes if isinstance(n, ast.ClassDef)]
     found: set[str] = set()
     grew = True
     while grew:
@@ -244,45 +248,52 @@ def _name_argument(call: ast.Call, in_node_class: bool, imports: dict[str, str],
     return _NOT_A_SITE
 
 
-def _node_sites(path: str, tree: ast.Module, imports: dict[str, str], consts: dict[str, str]
+def _node_sites(path: str, tree: ast.Module, imports: dict[str, str], consts: dict[str, str],
+                nodes: list[ast.AST]
                 ) -> tuple[list[tuple[NodeSite, str | None]], list[tuple[str, str | None, Span | None]]]:
-    """The places the file makes a node, each with the class whose code it is in; and each class
-    construction with its first argument's literal (None: another argument, or none):
-    ``LifecycleTalker('lc_talker')`` names the node a constructor that passes its argument on
-    to ``Node`` makes."""
-    own = _node_classes(tree, imports)
+    """The places the file (``nodes``: every node of ``tree``) makes a node, each with the class
+    whose code it is in; and each class construction with its first argument's literal (None:
+    another argument, or none): ``LifecycleTalker('lc_talker')`` names the node a constructor that
+    passes its argument on to ``Node`` makes."""
+    own = _node_classes(nodes, imports)
     sites: list[tuple[NodeSite, str | None]] = []
     makes: list[tuple[str, str | None, Span | None]] = []
 
-    def visit(node: ast.AST, cls: str | None, params: frozenset[str]) -> None:
-        for child in ast.iter_child_nodes(node):
-            if isinstance(child, ast.ClassDef):
-                visit(child, child.name if child.name in own else None, params)
-                continue
-            if isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)):
-                a = child.args
-                names = {x.arg for x in (*a.posonlyargs, *a.args, *a.kwonlyargs)}
-                names |= {x.arg for x in (a.vararg, a.kwarg) if x is not None}
-                visit(child, cls, frozenset(names))
-                continue
-            if isinstance(child, ast.Call):
-                arg = _name_argument(child, cls is not None, imports, own)
-                if arg is not _NOT_A_SITE and arg is not None:
-                    name = _str_of(arg, consts)
-                    passed = name is None and isinstance(arg, ast.Name) and arg.id in params
-                    ns = _namespace_of(child, consts)
-                    if _own_arguments_rename(child):
-                        name, passed = None, False  # rcl applies the node's own -r __node:= first
-                    sites.append(((name, (cls or "") if passed else None, _span(path, arg), ns), cls))
-                elif arg is _NOT_A_SITE:
-                    callee = (_dotted(child.func) or "").rsplit(".", 1)[-1]
-                    if callee[:1].isupper():
-                        makes.append((callee, _str_of(_arg(child, 0, "node_name"), consts),
-                                      _span(path, child)))
-            visit(child, cls, params)
-
-    visit(tree, None, frozenset())
-    for node in ast.walk(tree):  # a remap of the node's own name anywhere (a cli_args list built apart)
+    # Pre-order, as a recursive walk gives, each node with the node class and the parameters of
+    # the function it is in; an explicit stack over ``_fields`` (``ast.iter_child_nodes`` was half
+    # of the extraction).
+    stack: list[tuple[ast.AST, str | None, frozenset[str]]] = [(tree, None, frozenset())]
+    while stack:
+        node, cls, params = stack.pop()
+        if isinstance(node, ast.ClassDef):
+            cls = node.name if node.name in own else None
+        elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)):
+            a = node.args
+            names = {x.arg for x in (*a.posonlyargs, *a.args, *a.kwonlyargs)}
+            names |= {x.arg for x in (a.vararg, a.kwarg) if x is not None}
+            params = frozenset(names)
+        elif isinstance(node, ast.Call):
+            arg = _name_argument(node, cls is not None, imports, own)
+            if arg is not _NOT_A_SITE and arg is not None:
+                name = _str_of(arg, consts)
+                passed = name is None and isinstance(arg, ast.Name) and arg.id in params
+                ns = _namespace_of(node, consts)
+                if _own_arguments_rename(node):
+                    name, passed = None, False  # rcl applies the node's own -r __node:= first
+                sites.append(((name, (cls or "") if passed else None, _span(path, arg), ns), cls))
+            elif arg is _NOT_A_SITE:
+                callee = (_dotted(node.func) or "").rsplit(".", 1)[-1]
+                if callee[:1].isupper():
+                    makes.append((callee, _str_of(_arg(node, 0, "node_name"), consts), _span(path, node)))
+        children: list[ast.AST] = []
+        for field in node._fields:
+            value = getattr(node, field, None)
+            if isinstance(value, list):
+                children.extend(v for v in value if isinstance(v, _AST))
+            elif isinstance(value, _AST):
+                children.append(value)
+        stack.extend((child, cls, params) for child in reversed(children))
+    for node in nodes:  # a remap of the node's own name anywhere (a cli_args list built apart)
         if isinstance(node, ast.Constant) and isinstance(node.value, str) and CODE_REMAP.search(node.value):
             sites.append(((None, None, _span(path, node), ""), None))
     return sites, makes
@@ -312,22 +323,19 @@ def _own_arguments_rename(call: ast.Call) -> bool:
 _MAX_FOLLOWED = 8  # imported classes read per file for the node they make
 
 
-def _imported_node_sites(path: str, tree: ast.Module, classes: set[str], read: Reader
+def _imported_node_sites(path: str, nodes: list[ast.AST], classes: set[str], read: Reader
                          ) -> list[NodeSite]:
     """The places where the imported ``classes`` (those the file constructs) make a node, read
     from the package's own modules they come from (``from my_pkg.talker import Talker``,
     ``from .talker import Talker``): the entry module of a console script often only constructs
     the node class another module defines. A class of another package is not read."""
     out: list[NodeSite] = []
-    for cls, module, level in _imports_of(tree, classes)[:_MAX_FOLLOWED]:
+    for cls, module, level in _imports_of(nodes, classes)[:_MAX_FOLLOWED]:
         found = _module_source(path, module, level, read)
         if found is None:
             continue
-        mpath, mtree = found
+        bases, sites = _module_sites(*found)
         real = cls[1]
-        mimports = _imports(ast_nodes(mtree))
-        bases = {c.name: [(_dotted(b) or "").rsplit(".", 1)[-1] for b in c.bases]
-                 for c in ast.walk(mtree) if isinstance(c, ast.ClassDef)}
         chain, todo = set(), [real]
         while todo:  # the class and the bases of it the module defines
             c = todo.pop()
@@ -336,16 +344,34 @@ def _imported_node_sites(path: str, tree: ast.Module, classes: set[str], read: R
                 todo.extend(bases[c])
         if real not in chain:
             continue
-        sites, _ = _node_sites(mpath, mtree, mimports, _const_strings(mtree))
         out.extend(site for site, owner in sites if owner in chain)
     return out
 
 
-def _imports_of(tree: ast.Module, classes: set[str]) -> list[tuple[tuple[str, str], str, int]]:
+@lru_cache(maxsize=256)
+def _module_sites(path: str, text: str) -> tuple[dict[str, list[str]], tuple[tuple[NodeSite, str | None], ...]]:
+    """Of a module other entry modules import node classes from: each class's bases (last name),
+    and where the module makes a node (``_node_sites``). Read once per process: the executables of
+    a package often import from the same module (nav2_simple_commander's examples, 54 KB each)."""
+    try:
+        tree = ast.parse(text, filename=path)
+    except (SyntaxError, ValueError, RecursionError, MemoryError):
+        return {}, ()
+    try:
+        nodes = ast_nodes(tree)
+        bases = {c.name: [(_dotted(b) or "").rsplit(".", 1)[-1] for b in c.bases]
+                 for c in nodes if isinstance(c, ast.ClassDef)}
+        sites, _ = _node_sites(path, tree, _imports(nodes), _const_strings(tree), nodes)
+    except RecursionError:
+        return {}, ()
+    return bases, tuple(sites)
+
+
+def _imports_of(nodes: list[ast.AST], classes: set[str]) -> list[tuple[tuple[str, str], str, int]]:
     """((local name, name in its module), module, level) of each of ``classes`` imported with
-    ``from ... import``."""
+    ``from ... import`` (``nodes``: every node of the file's tree)."""
     out = []
-    for node in ast.walk(tree):
+    for node in nodes:
         if isinstance(node, ast.ImportFrom):
             for a in node.names:
                 local = a.asname or a.name
@@ -354,8 +380,8 @@ def _imports_of(tree: ast.Module, classes: set[str]) -> list[tuple[tuple[str, st
     return sorted(out)
 
 
-def _module_source(path: str, module: str, level: int, read: Reader) -> tuple[str, ast.Module] | None:
-    """The file and tree of ``module`` imported from ``path`` (``level`` dots), when it is one of
+def _module_source(path: str, module: str, level: int, read: Reader) -> tuple[str, str] | None:
+    """The file and text of ``module`` imported from ``path`` (``level`` dots), when it is one of
     the package's own: beside the file, or under one of its three nearest parent folders."""
     parts = [p for p in module.split(".") if p]
     folder = posixpath.dirname(path)
@@ -377,10 +403,7 @@ def _module_source(path: str, module: str, level: int, read: Reader) -> tuple[st
             text = read(candidate)
             if text is None or len(text) > MAX_SOURCE:
                 continue
-            try:
-                return candidate, ast.parse(text, filename=candidate)
-            except (SyntaxError, ValueError, RecursionError, MemoryError):
-                return None
+            return candidate, text
     return None
 
 
@@ -433,10 +456,10 @@ def _descriptor_read_only(node: ast.AST | None, names: set[str]) -> bool:
     return name is not None and name in names
 
 
-def _extract_one(path: str, tree: ast.Module, iface: NodeInterface
+def _extract_one(path: str, tree: ast.Module, iface: NodeInterface, nodes: list[ast.AST]
                  ) -> tuple[dict[str, str], dict[str, str]]:
-    """Add what one file declares to ``iface``; the file's imports and string constants."""
-    nodes = ast_nodes(tree)
+    """Add what one file (``nodes``: every node of ``tree``) declares to ``iface``; the file's
+    imports and string constants."""
     imports = _imports(nodes)
     consts = _const_strings(tree)
     read_only = _read_only_descriptors(nodes)

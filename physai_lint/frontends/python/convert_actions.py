@@ -74,6 +74,8 @@ _PLAIN_ARGS: dict[str, tuple[tuple[str, str], ...]] = {
                                     "ExecuteProcess", "ExecuteLocal")},
     "GroupAction": (("scoped", "bool"), ("forwarding", "bool")),
 }
+# A string for a plain bool is true whatever it says: one that says so does what it reads.
+_TRUE_WORDS = frozenset({"true", "1", "yes", "on"})
 
 
 class ActionBuilder:
@@ -248,6 +250,8 @@ class ActionBuilder:
                 continue
             if want == "number" and o.arg(-1, "respawn", False) is False:
                 continue  # only compared when the process is respawned
+            if want == "bool" and isinstance(v, str) and v.strip().lower() in _TRUE_WORDS:
+                continue  # emulate_tty='True': on, as written (only a false-looking one misleads)
             self.ev.wrong_type(f"plain-{want}", f"{n}({name}=...)", v, o.arg_span(-1, name))  # type: ignore[arg-type]
         if n == "GroupAction":
             lcs = o.arg(-1, "launch_configurations")

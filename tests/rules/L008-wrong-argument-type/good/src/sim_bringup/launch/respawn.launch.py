@@ -16,6 +16,8 @@ def generate_launch_description():
              respawn_delay=2.0, emulate_tty=True),
         Node(package='demo_nodes_cpp', executable='talker', name='talker2',
              respawn_delay='2.0'),  # never respawned: the delay is never compared
+        Node(package='demo_nodes_cpp', executable='listener', name='listener2',
+             emulate_tty='True'),  # a string is always true: on, as it says
         ExecuteProcess(cmd=['ls'], shell=False, output=LaunchConfiguration('emulate_tty')),
         GroupAction([listener], scoped=True, condition=IfCondition(scoped)),
         GroupAction([listener], scoped=False, condition=UnlessCondition(scoped)),

@@ -55,3 +55,9 @@ class BuildInfo:
     executables_complete: bool = True  # False: an executable list we could not fully read
     project_name: str | None = None
     problems: list[tuple[str, str, int]] = field(default_factory=list)  # (path, message, line)
+    # Commands the CMake reader did not interpret (CMake's own, or a dependency's macros), the
+    # packages find_package() names, and the functions and macros the CONFIG_EXTRAS files define
+    # that install something (lower case): a dependency's macro may install into this package.
+    calls: set[str] = field(default_factory=set)
+    found_packages: set[str] = field(default_factory=set)
+    installers: set[str] = field(default_factory=set)

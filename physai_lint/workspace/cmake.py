@@ -296,12 +296,33 @@ class _Interp:
             self.vars["CMAKE_CURRENT_LIST_DIR"] = sub
             self.run(tokenize(text), path.replace(os.sep, "/"), depth + 1)
             self.vars = saved_vars
-        elif name in self.functions and any(c.name == "install" for c in self.functions[name]):
-            self.info.complete = False
-            self.info.executables_complete = False
+        elif name in self.functions:
+            if any(c.name == "install" for c in self.functions[name]):
+                self.info.complete = False
+                self.info.executables_complete = False
+        elif name == "find_package":
+            a = self.args(cmd)
+            if a and UNKNOWN not in a[0]:
+                self.info.found_packages.add(a[0])
+        else:
+            # Not read here: a command of CMake or of a dependency. A dependency's own macro may
+            # install files (``PackageIndex.installs_through_dependency``).
+            self.info.calls.add(name)
 
     def ament_package(self, cmd: Command, origin: str) -> None:
         self.add_rule("file", f"share/{self.pkg_name}", self.pkg_dir + "/package.xml", cmd.line, origin)
+        # CONFIG_EXTRAS: CMake files that every package finding this one runs; the macros they
+        # define that install something install into the *calling* package's share directory
+        # (ros2_canopen's lely_core_libraries: generate_dcf(robot) installs config/robot/).
+        _, opts = _split_opts(self.args(cmd), {"CONFIG_EXTRAS", "CONFIG_EXTRAS_POST", "INSTALL_TO_SHARE"})
+        for extra in opts.get("CONFIG_EXTRAS", []) + opts.get("CONFIG_EXTRAS_POST", []):
+            path = self.src_path(extra) if ".cmake" in extra else None
+            if path is None:
+                continue
+            text = read_listfile(path)
+            self.reads.append((path, text))
+            if text is not None:
+                self.info.installers.update(_installing_definitions(tokenize(text)))
 
     def add_rule(self, kind: str, dest: str | None, source: str | None, line: int, origin: str,
                  **kw: object) -> None:
@@ -529,6 +550,31 @@ def _block(cmds: list[Command], i: int, start: str, end: str) -> tuple[list[Comm
         body.append(c)
         j += 1
     return body, j
+
+
+def _installing_definitions(cmds: list[Command]) -> set[str]:
+    """The (lower-case) names of the functions and macros ``cmds`` define whose bodies install
+    something, directly or through another such definition of the same file."""
+    bodies: dict[str, list[Command]] = {}
+    i = 0
+    while i < len(cmds):
+        cmd = cmds[i]
+        if cmd.name in ("function", "macro"):
+            body, i = _block(cmds, i, cmd.name, "end" + cmd.name)
+            first = next((a.value for a in cmd.args), None)
+            if first:
+                bodies[first.lower()] = body
+            continue
+        i += 1
+    found = {n for n, body in bodies.items() if any(c.name == "install" for c in body)}
+    grew = True
+    while grew:
+        grew = False
+        for n, body in bodies.items():
+            if n not in found and any(c.name in found for c in body):
+                found.add(n)
+                grew = True
+    return found
 
 
 def _kwarg(a: list[str], key: str) -> str | None:

@@ -62,6 +62,11 @@ class WorkspacePackage:
     library_sources: dict[str, tuple[str, ...]] = field(default_factory=dict)
     source_roots: dict[str, tuple[str, ...]] = field(default_factory=dict)
     scripts_dir: str | None = None  # setup.cfg's script_dir when it is not lib/<name>
+    # CMake: commands the reader did not interpret, the packages find_package() names, and the
+    # CONFIG_EXTRAS macros of this package that install something (BuildInfo)
+    calls: frozenset[str] = field(default_factory=frozenset)
+    found_packages: frozenset[str] = field(default_factory=frozenset)
+    installers: frozenset[str] = field(default_factory=frozenset)
 
 
 def _norm(path: str) -> str:
@@ -398,11 +403,23 @@ class PackageIndex:
             return Located("missing", missing_source, name)
         tail = rel[len(share) + 1 :] if rel.startswith(share + "/") else None
         counterpart = f"{pkg.path}/{tail}" if tail else None
-        if unknown_hit or not pkg.install_complete:
+        if unknown_hit or not pkg.install_complete or self._installs_through_dependency(pkg):
             return Located("unknown", counterpart if tail and tail in pkg.files else None, name)
         if tail is not None and (tail in pkg.files or tail in pkg.dirs):
             return Located("not_installed", counterpart, name, _install_hint(pkg, tail))
         return Located("missing", counterpart, name)
+
+    def _installs_through_dependency(self, pkg: WorkspacePackage) -> bool:
+        """Whether ``pkg``'s CMakeLists.txt calls a macro that a workspace package it finds
+        defines in its CONFIG_EXTRAS and that installs something: what it installs then is not
+        known here (asked only once a file looks not installed, so only then are those read)."""
+        if not pkg.calls:
+            return False
+        for dep in sorted(pkg.found_packages - {pkg.name}):
+            other = self.packages.get(dep)
+            if other is not None and other.installers & pkg.calls:
+                return True
+        return False
 
     def _source_exists(self, pkg: WorkspacePackage, path: str) -> bool:
         if path.startswith(pkg.path + "/"):
@@ -748,7 +765,7 @@ def _read_cmake(index: PackageIndex, pkg_dir: str, name: str, text: str | None) 
     cache = index.cache
     if cache is None or text is None:
         return read_cmake_package(pkg_dir, name, text)
-    key = cache.key("cmake-2", pkg_dir + "/CMakeLists.txt", text, name)  # 2: library sources
+    key = cache.key("cmake-3", pkg_dir + "/CMakeLists.txt", text, name)  # 3: dependency macros
     hit = cache.get(key)
     if (isinstance(hit, tuple) and len(hit) == 2 and type(hit[0]) is BuildInfo
             and all(_digest(read_listfile(p)) == d for p, d in hit[1])):
@@ -813,4 +830,7 @@ def _read_package(index: PackageIndex, pkg_dir: str) -> WorkspacePackage | None:
         executables_complete=info.executables_complete,
         registers_in_index=info.registers_in_index,
         valid=man.error is None,
+        calls=frozenset(info.calls),
+        found_packages=frozenset(info.found_packages),
+        installers=frozenset(info.installers),
     )

@@ -136,6 +136,21 @@ class Verdict:
     reason: str = ""
 
 
+# A module-level ``def generate_launch_description(`` (not one a code generator writes in a string).
+_DEFINES_ENTRY = re.compile(r"^(?:async[ \t]+)?def[ \t]+generate_launch_description[ \t]*\(", re.M)
+
+
+def defines_entry(text: str) -> bool:
+    """Whether Python ``text`` defines ``generate_launch_description`` at module level: a line
+    starting with its ``def``, outside a triple-quoted string (the file's triple quotes before it
+    pair up; a launch file generator writes one in its template)."""
+    for m in _DEFINES_ENTRY.finditer(text):
+        before = text[: m.start()]
+        if before.count('"""') % 2 == 0 and before.count("'''") % 2 == 0:
+            return True
+    return False
+
+
 def classify(name: str, text: str | None, explicit: bool) -> Verdict:
     """Launch file, parameter file or neither, for a file its name does not decide.
 
@@ -164,7 +179,7 @@ def classify(name: str, text: str | None, explicit: bool) -> Verdict:
             return Verdict(None, f"a ROS 1 (roslaunch) launch file ({marker} on line {line}), "
                                  "which ros2 launch cannot load")
         return Verdict("launch" if explicit or named or (gen.ros2 and xml_root(text) == "launch") else None)
-    if named or fmt == "yaml" or "def generate_launch_description" in text or (explicit and name.endswith(".launch")):
+    if named or fmt == "yaml" or defines_entry(text) or (explicit and name.endswith(".launch")):
         return Verdict("launch")
     if explicit:  # setup.py or a README among the changed files a script hands over
         return Verdict(None, "not a launch file: no launch frontend takes it, and as Python it defines "

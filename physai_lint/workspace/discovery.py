@@ -226,7 +226,7 @@ def discover(paths: list[str], respect_gitignore: bool = True) -> Discovery:
             manifests.add(path)
         elif name.endswith("launch.py"):
             launch.add(path)
-        elif forced or is_launch_file(name) or name.endswith(".launch"):
+        elif forced or is_launch_file(name) or name.endswith((".launch", ".py")):
             undecided.add(path)  # read by the file store, which parses it then if it is taken
         elif name.endswith(YAML_SUFFIXES) and sniff_param_file(path):
             params.add(path)
@@ -246,6 +246,10 @@ def discover(paths: list[str], respect_gitignore: bool = True) -> Discovery:
         if gi is not None:
             gi.listing(dirpath, names)
         subdirs: list[str] = []
+        # ``ros2 launch pkg file`` runs a file of any name: in a launch folder, a Python file that
+        # defines generate_launch_description is one (PlanSys2's plansys2_bringup_launch_distributed.py)
+        # and the file store takes it; any other Python file there is left alone.
+        in_launch_dir = "/launch/" in dirpath + "/"
         for entry in sorted(entries, key=lambda e: e.name):
             path = dirpath.rstrip("/") + "/" + entry.name
             try:
@@ -262,7 +266,7 @@ def discover(paths: list[str], respect_gitignore: bool = True) -> Discovery:
             name = entry.name
             # Named before the gitignore rules are asked: most files are none of these (9,200 of
             # 11,250 in a public workspace; discovery went from 0.126 s to 0.080 s).
-            if not _wanted(name):
+            if not _wanted(name) and not (in_launch_dir and name.endswith(".py")):
                 continue
             try:
                 if not entry.is_file():

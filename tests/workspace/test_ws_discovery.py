@@ -117,3 +117,45 @@ def test_find_workspace_root(ws, tmp_path, monkeypatch):
     (lone / "a.launch.py").write_text("")
     monkeypatch.chdir(lone)
     assert find_workspace_root([str(lone / "a.launch.py")]) == str(lone)
+
+
+def test_python_files_in_a_launch_folder_are_launch_files_when_they_define_the_entry(tmp_path):
+    """``ros2 launch pkg file`` runs a file of any name: in a launch folder, a Python file that
+    defines generate_launch_description is checked (and so includes it makes are not roots); a
+    helper module there, or a generator that writes the function in a string, is not."""
+    from physai_lint.engine import CheckOptions, run_check
+
+    launch = tmp_path / "src" / "demo" / "launch"
+    launch.mkdir(parents=True)
+    (tmp_path / "src" / "demo" / "package.xml").write_text(
+        '<package format="3"><name>demo</name><version>0.0.1</version><description>d</description>'
+        '<maintainer email="a@b.c">m</maintainer><license>MIT</license>'
+        '<export><build_type>ament_python</build_type></export></package>\n')
+    (launch / "talker_launch.py").write_text(
+        "from launch import LaunchDescription\n"
+        "from launch.actions import LogInfo\n"
+        "from launch.substitutions import LaunchConfiguration\n\n\n"
+        "def generate_launch_description():\n"
+        "    return LaunchDescription([LogInfo(msg=LaunchConfiguration('params_file'))])\n")
+    (launch / "bringup_main.py").write_text(
+        "import os\n"
+        "from launch import LaunchDescription\n"
+        "from launch.actions import DeclareLaunchArgument, IncludeLaunchDescription\n"
+        "from launch.launch_description_sources import PythonLaunchDescriptionSource\n\n\n"
+        "def generate_launch_description():\n"
+        "    here = os.path.dirname(__file__)\n"
+        "    return LaunchDescription([\n"
+        "        DeclareLaunchArgument('params_file', default_value='a.yaml'),\n"
+        "        IncludeLaunchDescription(PythonLaunchDescriptionSource(os.path.join(here, 'talker_launch.py'))),\n"
+        "    ])\n")
+    (launch / "helpers.py").write_text("def node_list():\n    return []\n")
+    (launch / "writer.py").write_text(
+        "TEMPLATE = '''\ndef generate_launch_description():\n    return None\n'''\n")
+    d = discover([str(tmp_path)])
+    assert rel(tmp_path, d.undecided) == ["src/demo/launch/bringup_main.py", "src/demo/launch/helpers.py",
+                                          "src/demo/launch/writer.py"]
+    report = run_check(CheckOptions(paths=[str(tmp_path / "src")], workspace=str(tmp_path), cache=False))
+    assert sorted(rel(tmp_path, report.files)) == ["src/demo/launch/bringup_main.py",
+                                                   "src/demo/launch/talker_launch.py"]
+    # talker_launch.py reads params_file, which its includer declares: no L101, no L006 anywhere
+    assert [f.code for f in report.findings if f.code in ("L101", "L006")] == []

@@ -176,7 +176,7 @@ def _declared_node_name(iface: NodeInterface, value: yaml.Node, path: str, diags
 
 # ---- bundled schemas ----------------------------------------------------------------------------
 
-def _bundled_entry(data: dict[str, Any], path: str) -> NodeInterface:
+def _bundled_entry(data: dict[str, Any], path: str, distro: str = "humble") -> NodeInterface:
     iface = NodeInterface(source=f"bundled {data.get('upstream', path)}")
     for kind in ENDPOINT_KINDS:
         if kind in data:
@@ -184,6 +184,10 @@ def _bundled_entry(data: dict[str, Any], path: str) -> NodeInterface:
             for e in data[kind] or []:
                 if isinstance(e, str):
                     iface_list.append(Endpoint(e))
+                elif isinstance(e, dict) and isinstance(e.get("distros"), list) and distro not in e["distros"]:
+                    # named so only on other distros: here its name follows another topic's
+                    # remapped name at run time (image_transport's camera_info)
+                    iface.unnamed.append((kind, e.get("type")))
                 elif isinstance(e, dict) and "name" in e:
                     when = e.get("when") if isinstance(e.get("when"), dict) else {}
                     iface_list.append(Endpoint(str(e["name"]), e.get("type"), None,
@@ -230,7 +234,7 @@ def load_bundled(distro: str = "humble") -> dict[Key, NodeInterface]:
         for exe, entry in (data.get("nodes") or {}).items():
             if isinstance(entry, dict) and isinstance(pkg, str):
                 out[(pkg, str(exe))] = _bundled_entry(dict(entry, upstream=data.get("upstream")),
-                                                      str(f))
+                                                      str(f), distro)
     return out
 
 
@@ -254,6 +258,8 @@ def merge(layers: Iterable[NodeInterface]) -> NodeInterface | None:
         if chosen is None or chosen.source.startswith("extracted"):  # the code's word on this kind
             out.unnamed.extend(u for layer in layers if layer.source.startswith("extracted")
                                for u in layer.unnamed if u[0] == kind)
+        else:  # a declaration's: those of its endpoints named only at run time
+            out.unnamed.extend(u for u in chosen.unnamed if u[0] == kind)
     params: dict[str, ParamDecl] | None = None
     complete = False
     patterns: list[str] = []

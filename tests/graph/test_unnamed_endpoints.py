@@ -74,3 +74,39 @@ def test_an_include_that_cannot_be_followed_may_start_the_publisher(tmp_path: Pa
 
     assert len(found("")) == 1
     assert found('<include file="$(find-pkg-share realsense2_camera)/launch/rs_launch.py"/>') == []
+
+
+CAMERA_LAUNCH = """from launch import LaunchDescription
+from launch_ros.actions import LoadComposableNodes, Node
+from launch_ros.descriptions import ComposableNode
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='usb_cam', executable='usb_cam_node_exe', name='camera', namespace='front'),
+        LoadComposableNodes(target_container='/vision', composable_node_descriptions=[
+            ComposableNode(package='image_proc', plugin='image_proc::RectifyNode', name='rectify',
+                           namespace='proc', remappings=[('image', '/front/image_raw')]),
+        ]),
+    ])
+"""
+
+
+def _camera_findings(tmp_path: Path, demo_package: Any, distro: str) -> list[tuple[str, str]]:
+    pkg = demo_package({"launch/camera.launch.py": CAMERA_LAUNCH})
+    opts = CheckOptions(paths=[str(pkg / "launch/camera.launch.py")], workspace=str(tmp_path), cache=False,
+                        distro=distro)
+    return sorted((f.code, f.message.split(" but ")[0]) for f in run_check(opts).findings if f.code in ("T201", "T202"))
+
+
+def test_a_declared_endpoint_named_by_a_remapped_topic_is_unnamed_where_it_is(tmp_path: Path, demo_package: Any) -> None:
+    # humble: image_proc 3.0 subscribes <ns>/camera_info whatever "image" is remapped to
+    assert _camera_findings(tmp_path, demo_package, "humble") == [
+        ("T201", '/proc/rectify subscribes to "/proc/camera_info"'),
+        ("T202", '/front/camera publishes "/front/camera_info"'),
+    ]
+
+
+def test_from_jazzy_rectify_follows_its_remapped_image(tmp_path: Path, demo_package: Any) -> None:
+    # image_proc 5.0 resolves "image" with its remappings: camera_info is /front/camera_info
+    assert _camera_findings(tmp_path, demo_package, "jazzy") == []

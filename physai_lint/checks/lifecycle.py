@@ -13,7 +13,6 @@ from physai_lint.resolve.model import LaunchResult, NodeInstance, ResolvedParamD
 from physai_lint.resolve.names import expand_topic_name
 
 MANAGERS = {("nav2_lifecycle_manager", "lifecycle_manager")}
-MANAGED_PACKAGES_PREFIX = ("nav2_",)
 
 
 def managers(ctx: CheckContext, launch: LaunchResult) -> Iterator[tuple[NodeInstance, list[str], Any]]:
@@ -68,18 +67,58 @@ def not_launched(ctx: CheckContext) -> Iterator[Diagnostic]:
 def unmanaged(ctx: CheckContext) -> Iterator[Diagnostic]:
     for launch in ctx.launches:
         mgrs = list(managers(ctx, launch))
-        if not mgrs:
-            continue
+        if not mgrs or len(mgrs) < sum(1 for n in launch.nodes if n.active is not False
+                                       and (n.package, n.executable) in MANAGERS):
+            continue  # no manager here, or one whose node_names are not known
         managed = {expand_topic_name(n, m.name, m.namespace) for m, names, _ in mgrs for n in names}
+        managed |= _set_by_command(launch)
+        # the launch drives some nodes itself: EmitEvent(ChangeState(lifecycle_node_matcher=...))
+        driven = {target for target, _ in launch.lifecycle_changes}
+        if None in driven or None in managed:
+            continue  # a transition whose target is not known may be any node's
         for node in launch.nodes:
-            if node.active is False or node.kind != "lifecycle_node" or node.fqn is None:
+            if node.active is False or node.fqn is None or not _is_lifecycle(ctx, node):
                 continue
-            if node.fqn not in managed:
+            if node.fqn not in managed and node.action_id not in driven and not _autostarts(ctx, node):
                 yield Diagnostic(
                     "S202", node.spans.get("name", node.span),
                     f"lifecycle node {where(node)} is launched but no lifecycle manager names it; it "
                     "stays unconfigured",
                     help=f'add "{node.name}" to a lifecycle manager\'s node_names', key=node.fqn)
+
+
+def _is_lifecycle(ctx: CheckContext, node: NodeInstance) -> bool:
+    """A ``LifecycleNode`` action, or a node whose executable is known to make a lifecycle node
+    (nav2 starts its servers with ``Node``)."""
+    if node.kind == "lifecycle_node":
+        return True
+    if node.kind not in ("node", "composable_node") or ctx.interfaces is None:
+        return False
+    iface = ctx.interfaces.get(node.package, node.executable)
+    return iface is not None and bool(iface.lifecycle)
+
+
+def _autostarts(ctx: CheckContext, node: NodeInstance) -> bool:
+    """The node is given ``autostart: true`` (drivers that configure and activate themselves)."""
+    ep = effective(ctx, node).get("autostart")
+    return ep is not None and ep.value is True
+
+
+def _set_by_command(launch: LaunchResult) -> set[str | None]:
+    """The nodes a ``ros2 lifecycle set NODE TRANSITION`` process of the launch transitions (None:
+    one whose name is not known)."""
+    out: set[str | None] = set()
+    for p in launch.nodes:
+        if p.kind != "process" or p.active is False:
+            continue
+        words: list[Any] = []
+        for w in (p.executable, *p.arguments):  # ["ros2 lifecycle set /x configure"] with shell=True
+            words.extend(w.split() if isinstance(w, str) else [w])
+        for i in range(len(words) - 2):
+            if words[i] == "lifecycle" and words[i + 1] == "set":
+                name = words[i + 2]
+                out.add(expand_topic_name(name, "_", "/") if isinstance(name, str) and name else None)
+    return out
 
 
 _CONTAINER_EXECUTABLES = ("component_container", "component_container_mt", "component_container_isolated")

@@ -150,6 +150,8 @@ def parse_interfaces_file(path: str, text: str) -> tuple[dict[Key, NodeInterface
                     iface.parameters_complete = bool(to_python(fv))
                 elif field == "node_name":
                     _declared_node_name(iface, fv, path, diags)
+                elif field == "lifecycle":
+                    iface.lifecycle = to_python(fv) is True
                 else:
                     diags.append(Diagnostic("P104", node_span(path, fk),
                                             f"unknown field \"{field}\" in an interfaces entry"))
@@ -208,6 +210,7 @@ def _bundled_entry(data: dict[str, Any], path: str, distro: str = "humble") -> N
         name = data["node_name"]
         iface.node_name, iface.node_name_decided = (name if isinstance(name, str) else None), True
     iface.parameter_patterns = list(data.get("parameter_patterns", []) or [])
+    iface.lifecycle = data.get("lifecycle") is True
     return iface
 
 

@@ -31,6 +31,8 @@ if TYPE_CHECKING:
 
 Loader = Callable[[str], "ir.LaunchFile | None"]
 MAX_ACTIONS = 200_000
+# Events that change a lifecycle node's state (an event not known statically may be one)
+_CHANGE_STATE = frozenset({"launch_ros.events.lifecycle.ChangeState", "unknown"})
 
 REMAPS, PARAMS, NS = "ros_remaps", "global_params", "ros_namespace"
 
@@ -229,6 +231,10 @@ class Instantiator:
             for value in a.other:
                 self.ev.eval(value, scope)
             self._walk(a.actions, scope)
+        elif isinstance(a, ir.EmitEvent):
+            if a.event in _CHANGE_STATE and self.frame.active is not False:
+                target = f"{self.frame.file}#{a.target_id}" if a.target_id else None
+                self.result.lifecycle_changes.append((target, a.span))
         elif isinstance(a, (ir.Log, ir.Shutdown)):
             for val in (getattr(a, "message", None), getattr(a, "reason", None)):
                 self.ev.eval(val, scope)

@@ -199,6 +199,9 @@ class LaunchResult:
     # action that created the list, the nodes reached: node id -> the node's action)
     scope_leaks: list[tuple[Span, str, Span, dict[str, Span]]] = field(default_factory=list)
     use_sim_time_actions: list[Span] = field(default_factory=list)
+    # Lifecycle transitions the launch itself requests (EmitEvent(ChangeState(...))): the target
+    # node's action id ("<file>#<action id>"), None when the matcher may name any node
+    lifecycle_changes: list[tuple[str | None, Span]] = field(default_factory=list)
     # Opaque parts whose effects are unknown: (span, reason)
     opaque: list[tuple[Span, str]] = field(default_factory=list)
     # Condition values that are not true/false/1/0: (span, value)

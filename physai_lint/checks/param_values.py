@@ -165,6 +165,15 @@ _TIME_AGNOSTIC = frozenset({("tf2_ros", "static_transform_publisher"),
                             ("gazebo_ros", "spawn_entity.py")})
 
 
+def _publishes_clock(ctx: CheckContext, node: Any) -> bool:
+    """The node publishes /clock (its code or declaration says so): the time source of the others."""
+    iface = interface(ctx, node)
+    if iface is None:
+        return False
+    return any(e.name == "/clock" or (e.name == "clock" and node.namespace in ("/", ""))
+               for e in iface.endpoints("publishers"))
+
+
 @rule("P111", "inconsistent-use-sim-time")
 def use_sim_time(ctx: CheckContext) -> Iterator[Diagnostic]:
     seen: set[object] = set()
@@ -174,6 +183,8 @@ def use_sim_time(ctx: CheckContext) -> Iterator[Diagnostic]:
         for node in launch.nodes:
             if node.active is False or node.kind == "process":
                 continue
+            if _publishes_clock(ctx, node):
+                continue  # the /clock source itself runs on wall time (a simulator's bridge)
             params = effective(ctx, node)
             ep = params.get("use_sim_time")
             if ep is not None and isinstance(ep.value, bool) and ep.origin is not None:

@@ -218,7 +218,8 @@ def publication_without_subscriber(ctx: CheckContext) -> Iterator[Diagnostic]:
 _IMPLICIT_TOPICS = frozenset({"/rosout", "/parameter_events"})
 # The defaults of the rules' ``ignore-topics`` option (rules/T/T201-*.md, T202-*.md).
 # "*/tf" is /tf and a robot's namespaced /r1/tf alike (multi-robot launches remap them so).
-T201_IGNORE_TOPICS = ("/clock", "*/tf", "*/tf_static", "/parameter_events", "*/initialpose", "*/goal_pose")
+T201_IGNORE_TOPICS = ("/clock", "*/tf", "*/tf_static", "/parameter_events", "*/initialpose", "*/goal_pose",
+                      "*/set_pose")
 T202_IGNORE_TOPICS = ("/rosout", "/parameter_events", "*/tf", "*/tf_static", "*/diagnostics", "*/joint_states",
                       "*/robot_description")
 
@@ -243,11 +244,13 @@ def _dangling(ctx: CheckContext, mine: str, other: str, code: str) -> Iterator[D
         if len({e.node for e in g.endpoints}) < 2:
             continue  # a launch of one node (a filter, a driver): its inputs and outputs are others'
         by_topic: dict[str, set[str]] = {}  # topic -> nodes with an endpoint of the other kind
+        types: dict[str, set[str | None]] = {}  # topic -> the message types of those endpoints
         for o in g.of_kind(other):  # type: ignore[arg-type]
             if o.when and _exists(ctx, g, o) is False:
                 continue  # off under the node's parameters (imu/mag with use_mag false)
             if o.resolved and _valid(o.resolved):  # an invalid name (N104) is never suggested
                 by_topic.setdefault(o.resolved, set()).add(o.node)
+                types.setdefault(o.resolved, set()).add(o.type)
         others = set(by_topic)
         # A near miss is another node's topic: a filter's "output/pointcloud" is not a misspelt
         # "input/pointcloud" of the same filter (its own topics are left out of the suggestions).
@@ -276,7 +279,10 @@ def _dangling(ctx: CheckContext, mine: str, other: str, code: str) -> Iterator[D
             if (span, e.resolved) in seen:
                 continue
             seen.add((span, e.resolved))
-            close = similar(e.resolved, others - own.get(e.node, set()), 0.8 if mine == "publisher" else 0.6)
+            # a near miss carries the same messages: /joint_states is no misspelt /tf_static
+            candidates = {t for t in others - own.get(e.node, set())
+                          if e.type is None or None in types[t] or e.type in types[t]}
+            close = similar(e.resolved, candidates, 0.8 if mine == "publisher" else 0.6)
             if near_miss_only and not close:
                 continue  # an output nobody reads is normal (sensors, diagnostics); a near miss is not
             hint = (" (did you mean " + " or ".join(f'"{c}"' for c in close) + "?)") if close else ""

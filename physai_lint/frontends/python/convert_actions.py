@@ -314,7 +314,11 @@ class ActionBuilder:
             if v:  # launch_ros iterates it: each rule is a key, a str, not a tuple
                 self.ev.wrong_type("remap", f"{call}(remappings=...)", v, span)
             v = list(v.items())
-        elif isinstance(v, (list, tuple)):
+        elif isinstance(v, (set, frozenset)):
+            # launch_ros only iterates the rules ({('cmd_vel', '/x')}, husky): in hash order, which
+            # matters only between rules that match the same name; here in a fixed order
+            v = sorted(v, key=repr)
+        if isinstance(v, (list, tuple)):
             for k, rule in enumerate(v):
                 if isinstance(rule, list) and len(rule) == 2:  # normalize_remap_rule wants a tuple
                     self.ev.wrong_type("remap", f"{call}(remappings=[...])", rule, span_at(v, k, span))

@@ -56,6 +56,9 @@ def to_value(v: Any, span: Span | None) -> Value:
         if v.qual.endswith(".ParameterValue"):
             return to_value(v.arg(0, "value"), v.arg_span(0, "value"))
         if api.is_substitution(v.qual):
+            text = v.arg(0, "text", "") if api.short(v.qual) == "TextSubstitution" else None
+            if isinstance(text, (SymStr, KPath)):  # a str at run time, known only in parts here
+                return to_value(text, v.span)  # (TextSubstitution(text=get_package_share_directory(..) + ..))
             return (subst(v),)
         return (V.Unknown(f"{api.short(v.qual)} is not a substitution", v.span),)
     if isinstance(v, (list, tuple)):

@@ -146,15 +146,22 @@ def _stray_keys(path: str, model: Any, users: list[tuple[Any, Any]], keys: dict[
 def structure(ctx: CheckContext) -> Iterator[Diagnostic]:
     for path in sorted(ctx.param_files):
         for d in ctx.param_files[path].diagnostics:
-            if d.code == "P104":
+            if d.code == "P104" and not _templated(d):
                 yield d
+
+
+def _templated(d: Diagnostic) -> bool:
+    """A problem of a file's raw text at a ``$(...)`` substitution (``/$(var robot)/driver:``): such a
+    file is loaded with ``ParameterFile(..., allow_substs=True)``, which substitutes before rcl
+    reads it; what the nodes get is checked where they load it."""
+    return "$(" in d.message
 
 
 @rule("P106", "mixed-type-array")
 def mixed_array(ctx: CheckContext) -> Iterator[Diagnostic]:
     for path in sorted(ctx.param_files):
         for d in ctx.param_files[path].diagnostics:
-            if d.code == "P106":
+            if d.code == "P106" and not _templated(d):
                 yield d
     seen: set[object] = set()
     for _, node in all_nodes(ctx):

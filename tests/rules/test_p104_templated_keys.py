@@ -1,0 +1,35 @@
+"""P104: a parameter file written as a substitution template (loaded with allow_substs=True) is
+not judged by its raw text."""
+from __future__ import annotations
+
+from typing import Any
+
+LAUNCH = """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration, PathJoinSubstitution
+from launch_ros.actions import Node
+from launch_ros.descriptions import ParameterFile
+from launch_ros.substitutions import FindPackageShare
+
+
+def generate_launch_description():
+    params = PathJoinSubstitution([FindPackageShare('demo'), 'config', 'arm.yaml'])
+    return LaunchDescription([
+        DeclareLaunchArgument('robot_name', default_value='arm'),
+        Node(package='demo_nodes_cpp', executable='talker', name='driver',
+             namespace=LaunchConfiguration('robot_name'),
+             parameters=[ParameterFile(params, allow_substs=True)]),
+    ])
+"""
+
+
+def test_a_templated_key_is_not_reported(demo_findings: Any) -> None:
+    files = {"launch/a.launch.py": LAUNCH,
+             "config/arm.yaml": "/$(var robot_name)/driver:\n  ros__parameters:\n    rate: 10\n"}
+    assert demo_findings(files, "launch/a.launch.py", "P104") == []
+
+
+def test_a_plain_invalid_key_still_is(demo_findings: Any) -> None:
+    files = {"launch/a.launch.py": LAUNCH,
+             "config/arm.yaml": "/arm/dri ver:\n  ros__parameters:\n    rate: 10\n"}
+    assert len(demo_findings(files, "launch/a.launch.py", "P104")) == 1

@@ -171,11 +171,16 @@ def _sort_out(store: FileStore, found: Any) -> list[tuple[str, str]]:
     """Decide, from their texts, what discovery's undecided files are (``sniff.classify``): add
     them to its launch or parameter files, or leave them out. Returns the explicitly named files
     left out, with the reason. The texts stay in the store: each file is still read once."""
-    from physai_lint.sniff import classify
+    from physai_lint.sniff import classify, only_named_launch
     from physai_lint.workspace import is_launch_file
 
     explicit = set(found.explicit)
     launch, params, skipped = set(found.launch_files), set(found.param_files), []
+    for path in found.launch_files:  # found by a *launch.py name: left out if only the name says so
+        if path not in explicit:
+            text = store.peek(path)
+            if text is not None and only_named_launch(text):
+                launch.discard(path)
     for path in found.undecided:
         name = os.path.basename(path)
         # An unreadable file is reported (X002) when its name or the user says it is a launch file;

@@ -140,6 +140,17 @@ class Verdict:
 _DEFINES_ENTRY = re.compile(r"^(?:async[ \t]+)?def[ \t]+generate_launch_description[ \t]*\(", re.M)
 
 
+# ``import launch``, ``from launch_ros.actions import Node``, ``from launch import ...``
+_IMPORTS_LAUNCH = re.compile(r"^[ \t]*(?:from|import)[ \t]+launch(?:_ros|_xml|_yaml|_testing)?\b", re.M)
+
+
+def only_named_launch(text: str) -> bool:
+    """A Python file named ``*launch.py`` that is no launch file: it neither defines
+    ``generate_launch_description`` nor imports a launch package (ros2launch's own
+    ``command/launch.py``, a deploy tool's ``tasks/launch.py``)."""
+    return not defines_entry(text) and not _IMPORTS_LAUNCH.search(text)
+
+
 def defines_entry(text: str) -> bool:
     """Whether Python ``text`` defines ``generate_launch_description`` at module level: a line
     starting with its ``def``, outside a triple-quoted string (the file's triple quotes before it

@@ -159,3 +159,20 @@ def test_python_files_in_a_launch_folder_are_launch_files_when_they_define_the_e
                                                    "src/demo/launch/talker_launch.py"]
     # talker_launch.py reads params_file, which its includer declares: no L101, no L006 anywhere
     assert [f.code for f in report.findings if f.code in ("L101", "L006")] == []
+
+
+def test_a_python_module_only_named_like_a_launch_file_is_left_out(tmp_path):
+    """A ``launch.py`` that neither defines generate_launch_description nor imports launch (a
+    deploy tool's task, ros2launch's own command module) is no launch file in a directory scan;
+    named on the command line, it is checked as ros2 launch would load it."""
+    from physai_lint.engine import CheckOptions, run_check
+
+    tasks = tmp_path / "scripts" / "tasks"
+    tasks.mkdir(parents=True)
+    (tasks / "launch.py").write_text("import subprocess\n\n\ndef launch(host):\n    subprocess.run(['ssh', host])\n")
+    (tasks / "broken_launch.py").write_text("from launch import LaunchDescription\n\n\ndef generate():\n"
+                                             "    return LaunchDescription([])\n")
+    report = run_check(CheckOptions(paths=[str(tmp_path / "scripts")], workspace=str(tmp_path), cache=False))
+    assert [(os.path.basename(f.span.file), f.code) for f in report.findings] == [("broken_launch.py", "L006")]
+    report = run_check(CheckOptions(paths=[str(tasks / "launch.py")], workspace=str(tmp_path), cache=False))
+    assert [f.code for f in report.findings] == ["L006"]

@@ -45,7 +45,7 @@ def include_undeclared(ctx: CheckContext) -> Iterator[Diagnostic]:
                 yield Diagnostic(
                     "L106", span,  # type: ignore[arg-type]
                     f'argument "{name}" is passed to "{target}", which never declares or reads it '
-                    f"(it declares {declared}); the value is silently ignored"
+                    f"(it declares or reads {declared}); the value is silently ignored"
                     + (f"; {hint}" if hint else ""),
                     help="pass an argument the included file declares, or declare this one there",
                     key=f"{target}:{name}")

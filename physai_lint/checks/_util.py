@@ -46,17 +46,22 @@ def all_nodes(ctx: CheckContext, include_inactive: bool = True) -> Iterator[tupl
     return iter(run_memo(ctx.options, key, ctx.launches, lambda: list(_all_nodes(ctx, include_inactive))))
 
 
+_ACTIVITY = {True: 2, None: 1, False: 0}
+
+
 def _all_nodes(ctx: CheckContext, include_inactive: bool) -> Iterator[tuple[LaunchResult, NodeInstance]]:
-    seen: set[tuple[object, ...]] = set()
+    """In first-seen order; of the instances of one key, the most active (a node that one entry
+    includes under a false condition and another starts is checked as started)."""
+    best: dict[tuple[object, ...], tuple[LaunchResult, NodeInstance]] = {}
     for launch in ctx.launches:
         for node in launch.nodes:
             if not include_inactive and node.active is False:
                 continue
             key = (node.span, node.fqn, node.package, node.executable, node.kind)
-            if key in seen:
-                continue
-            seen.add(key)
-            yield launch, node
+            have = best.get(key)
+            if have is None or _ACTIVITY.get(node.active, 1) > _ACTIVITY.get(have[1].active, 1):
+                best[key] = (launch, node)
+    yield from best.values()
 
 
 def ir_objects(ctx: CheckContext, path: str) -> list[Any]:

@@ -354,6 +354,7 @@ def read_setup_py(pkg_dir: str, pkg_name: str, files: frozenset[str], text: str 
         return info
     line = setup_call.lineno
     scripts: list[tuple[str, str]] = []
+    plain_scripts: list[str] = []
     for kw in setup_call.keywords:
         if kw.arg is None:
             info.complete = info.executables_complete = False
@@ -366,6 +367,8 @@ def read_setup_py(pkg_dir: str, pkg_name: str, files: frozenset[str], text: str 
             elif kw.arg == "entry_points":
                 info.executables_complete = False
                 info.problems.append((path, "entry_points could not be read statically", kw.value.lineno))
+            elif kw.arg == "scripts":
+                info.executables_complete = False
             continue
         if kw.arg == "data_files":
             data_files = val if isinstance(val, (list, tuple)) else None  # type: ignore[assignment]
@@ -374,6 +377,13 @@ def read_setup_py(pkg_dir: str, pkg_name: str, files: frozenset[str], text: str 
             line = kw.value.lineno
         elif kw.arg == "entry_points":
             scripts.extend(_console_scripts(val))
+        elif kw.arg == "scripts":
+            # distutils scripts: copied, under their own file names, to where console scripts go
+            # (install_scripts / script_dir: lib/<pkg> with the usual setup.cfg)
+            if isinstance(val, (list, tuple)) and all(isinstance(x, str) for x in val):
+                plain_scripts.extend(posixpath.normpath(x.replace("\\", "/")) for x in val)
+            else:
+                info.executables_complete = False
         elif kw.arg == "packages" and isinstance(val, (list, tuple)):
             info.python_packages.update(p for p in val if isinstance(p, str))
     # console scripts
@@ -385,6 +395,11 @@ def read_setup_py(pkg_dir: str, pkg_name: str, files: frozenset[str], text: str 
     for exe, target in scripts:
         (info.executables if to_lib else info.executables_in_bin).add(exe)
         script_targets[exe] = target
+    for script in plain_scripts:
+        exe = posixpath.basename(script)
+        (info.executables if to_lib else info.executables_in_bin).add(exe)
+        if script in files and script.endswith(".py"):
+            info.sources.setdefault(exe, [pkg_dir + "/" + script])  # its interface, node name
     # data files -> install rules
     registers = False
     for entry in data_files or []:

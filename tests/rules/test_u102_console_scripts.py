@@ -35,9 +35,9 @@ def generate_launch_description():
 """
 
 
-def _u102(tmp_path: Path, setup_cfg: str | None) -> list[tuple[int, str, str]]:
+def _u102(tmp_path: Path, setup_cfg: str | None, setup_py: str = SETUP_PY) -> list[tuple[int, str, str]]:
     pkg = tmp_path / "src" / "pybot"
-    files = {"package.xml": PACKAGE_XML, "setup.py": SETUP_PY, "launch/a.launch.py": LAUNCH,
+    files = {"package.xml": PACKAGE_XML, "setup.py": setup_py, "launch/a.launch.py": LAUNCH,
              "pybot/__init__.py": "", "resource/pybot": ""}
     if setup_cfg is not None:
         files["setup.cfg"] = setup_cfg
@@ -82,3 +82,9 @@ def test_a_long_list_of_executables_says_how_many_are_left_out(demo_findings):
     found = demo_findings({"CMakeLists.txt": cmake, "launch/a.launch.xml": launch}, "launch/a.launch.xml", "U102")
     assert [m.rsplit("it provides: ", 1)[1] for _, m in found] == [
         ", ".join(f'"{n}"' for n in names[:8]) + " and 3 more"]
+
+
+def test_distutils_scripts_go_where_console_scripts_go(tmp_path: Path) -> None:
+    """setup(scripts=['scripts/driver.py']) copies the file, under its own name, to install_scripts."""
+    setup_py = SETUP_PY.replace("    entry_points=", "    scripts=['scripts/driver.py'],\n    entry_points=")
+    assert _u102(tmp_path, SETUP_CFG, setup_py) == []

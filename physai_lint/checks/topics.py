@@ -322,10 +322,23 @@ def _exists(ctx: CheckContext, g: SystemGraph, e: Endpoint) -> bool | None:
 @rule("T203", "topic-type-mismatch")
 def type_mismatch(ctx: CheckContext) -> Iterator[Diagnostic]:
     seen: set[object] = set()
+    known: dict[str, bool] = {}
+
+    def typed(t: str | None) -> bool:
+        """A type whose package is known: ``gm/msg/Pose`` read from ``namespace gm = geometry_msgs;``
+        code is an alias the extraction did not resolve, not a type of its own."""
+        if not t:
+            return False
+        pkg = t.split("/", 1)[0]
+        if pkg not in known:
+            has = getattr(ctx.packages, "has_package", None)
+            known[pkg] = has is None or bool(has(pkg))
+        return known[pkg]
+
     for g in graphs(ctx):
         by_topic: dict[str, list[Endpoint]] = {}  # typed publishers and subscribers, in endpoint order
         for e in g.endpoints:
-            if e.resolved and e.type and e.kind in ("publisher", "subscriber"):
+            if e.resolved and typed(e.type) and e.kind in ("publisher", "subscriber"):
                 by_topic.setdefault(e.resolved, []).append(e)
         for topic in g.topics():
             eps = by_topic.get(topic, [])

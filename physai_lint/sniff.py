@@ -137,11 +137,11 @@ class Verdict:
 
 
 # A module-level ``def generate_launch_description(`` (not one a code generator writes in a string).
-_DEFINES_ENTRY = re.compile(r"^(?:async[ \t]+)?def[ \t]+generate_launch_description[ \t]*\(", re.M)
+_DEFINES_ENTRY = re.compile(r"^(?:async[ \t]+)?def[ \t]+generate_launch_description[ \t]*\(", re.MULTILINE)
 
 
 # ``import launch``, ``from launch_ros.actions import Node``, ``from launch import ...``
-_IMPORTS_LAUNCH = re.compile(r"^[ \t]*(?:from|import)[ \t]+launch(?:_ros|_xml|_yaml|_testing)?\b", re.M)
+_IMPORTS_LAUNCH = re.compile(r"^[ \t]*(?:from|import)[ \t]+launch(?:_ros|_xml|_yaml|_testing)?\b", re.MULTILINE)
 
 
 def only_named_launch(text: str) -> bool:

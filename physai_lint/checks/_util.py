@@ -12,6 +12,23 @@ from physai_lint.model.launch import PythonFacts
 from physai_lint.resolve.model import LaunchResult, NodeInstance
 
 
+def command_words(proc: NodeInstance) -> list[str | None] | None:
+    """A process's command line split like a shell would (``["ros2 param set /x a 1"]`` with
+    ``shell=True`` too), None for each part not known statically; None when a part does not split."""
+    import shlex
+
+    out: list[str | None] = []
+    for part in (proc.executable, *proc.arguments):
+        if part is not None and any(c.isspace() for c in part):
+            try:
+                out.extend(shlex.split(part))
+            except ValueError:
+                return None
+        else:
+            out.append(part)
+    return out
+
+
 def did_you_mean(name: str, candidates: Iterable[str], n: int = 3, cutoff: float = 0.6) -> list[str]:
     return list(close_matches(name, tuple(sorted(set(candidates))), n, cutoff))
 

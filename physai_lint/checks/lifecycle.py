@@ -6,7 +6,7 @@ from collections.abc import Iterator
 from typing import Any
 
 from physai_lint.checks._params import effective
-from physai_lint.checks._util import did_you_mean, where
+from physai_lint.checks._util import command_words, did_you_mean, where
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic, Related
 from physai_lint.resolve.model import LaunchResult, NodeInstance, ResolvedParamDict
@@ -111,9 +111,7 @@ def _set_by_command(launch: LaunchResult) -> set[str | None]:
     for p in launch.nodes:
         if p.kind != "process" or p.active is False:
             continue
-        words: list[Any] = []
-        for w in (p.executable, *p.arguments):  # ["ros2 lifecycle set /x configure"] with shell=True
-            words.extend(w.split() if isinstance(w, str) else [w])
+        words = command_words(p) or []
         for i in range(len(words) - 2):
             if words[i] == "lifecycle" and words[i + 1] == "set":
                 name = words[i + 2]

@@ -10,11 +10,11 @@ which has no read-only test) and rclpy skips the test when a descriptor is being
 from __future__ import annotations
 
 import os
-import shlex
 from collections.abc import Iterator
 from typing import Any
 
 from physai_lint.checks._params import decl_source, interface
+from physai_lint.checks._util import command_words
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic, Related
 from physai_lint.resolve.model import LaunchResult, NodeInstance, ResolvedParamFile
@@ -25,20 +25,8 @@ _OPTS_WITH_VALUE = frozenset({"--spin-time", "--timeout"})
 
 def _argv(proc: NodeInstance) -> list[str] | None:
     """The process command line, split like a shell would; None when any part is unknown."""
-    parts = [proc.executable, *proc.arguments]
-    if any(p is None for p in parts):
-        return None
-    out: list[str] = []
-    for p in parts:
-        assert p is not None
-        if any(c.isspace() for c in p):
-            try:
-                out.extend(shlex.split(p))
-            except ValueError:
-                return None
-        else:
-            out.append(p)
-    return out
+    words = command_words(proc)
+    return None if words is None or None in words else words  # type: ignore[return-value]
 
 
 def _is_number(text: str) -> bool:

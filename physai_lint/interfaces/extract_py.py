@@ -17,7 +17,7 @@ from functools import lru_cache
 from typing import Any
 
 from physai_lint.model.span import Span
-from physai_lint.pyast import ast_nodes
+from physai_lint.pyast import ast_children, ast_nodes
 
 from .model import (
     CODE_CONDITION,
@@ -30,7 +30,6 @@ from .model import (
 )
 
 MAX_SOURCE = 2_000_000
-_AST = ast.AST
 Reader = Callable[[str], "str | None"]
 
 _CALLS = {
@@ -260,7 +259,7 @@ def _node_sites(path: str, tree: ast.Module, imports: dict[str, str], consts: di
     makes: list[tuple[str, str | None, Span | None]] = []
 
     # Pre-order, as a recursive walk gives, each node with the node class and the parameters of
-    # the function it is in; an explicit stack over ``_fields`` (``ast.iter_child_nodes`` was half
+    # the function it is in; an explicit stack (recursion through ``ast.iter_child_nodes`` was half
     # of the extraction).
     stack: list[tuple[ast.AST, str | None, frozenset[str]]] = [(tree, None, frozenset())]
     while stack:
@@ -285,14 +284,7 @@ def _node_sites(path: str, tree: ast.Module, imports: dict[str, str], consts: di
                 callee = (_dotted(node.func) or "").rsplit(".", 1)[-1]
                 if callee[:1].isupper():
                     makes.append((callee, _str_of(_arg(node, 0, "node_name"), consts), _span(path, node)))
-        children: list[ast.AST] = []
-        for field in node._fields:
-            value = getattr(node, field, None)
-            if isinstance(value, list):
-                children.extend(v for v in value if isinstance(v, _AST))
-            elif isinstance(value, _AST):
-                children.append(value)
-        stack.extend((child, cls, params) for child in reversed(children))
+        stack.extend((child, cls, params) for child in reversed(ast_children(node)))
     for node in nodes:  # a remap of the node's own name anywhere (a cli_args list built apart)
         if isinstance(node, ast.Constant) and isinstance(node.value, str) and CODE_REMAP.search(node.value):
             sites.append(((None, None, _span(path, node), ""), None))

@@ -306,7 +306,7 @@ class _Interp:
                 self.info.found_packages.add(a[0])
         else:
             # Not read here: a command of CMake or of a dependency. A dependency's own macro may
-            # install files (``PackageIndex.installs_through_dependency``).
+            # install files (``PackageIndex._installs_through_dependency``).
             self.info.calls.add(name)
 
     def ament_package(self, cmd: Command, origin: str) -> None:

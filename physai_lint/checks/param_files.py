@@ -86,8 +86,7 @@ def _whole_file(path: str, model: Any, users: list[tuple[Any, Any]]) -> Diagnost
     """No key of the file matches any node that loads it."""
     from physai_lint.params.match import explain_no_match
 
-    block = model.blocks[0]
-    node, src = users[0]
+    block, (node, src) = _closest_pair(model.blocks, users)
     fqns = ", ".join(sorted({f'"{n.fqn}"' for n, _ in users}))
     return Diagnostic(
         "P103", block.key_span,
@@ -100,6 +99,27 @@ def _whole_file(path: str, model: Any, users: list[tuple[Any, Any]]) -> Diagnost
         key=f"{_rel(path)}:{block.key}")
 
 
+def _own(key: str) -> str:
+    """The last segment of a node key: the node name it names."""
+    return key.rstrip("/").rsplit("/", 1)[-1]
+
+
+def _closest_pair(blocks: list[Any], users: list[tuple[Any, Any]]) -> tuple[Any, tuple[Any, Any]]:
+    """The key and the loading node the message of a whole-file P103 explains: a key named like a
+    node (else close to one), else the first of each."""
+    from physai_lint.closematch import close_matches
+
+    names = {n.name: (n, s) for n, s in reversed(users) if n.name}
+    for block in blocks:
+        if _own(block.key) in names:
+            return block, names[_own(block.key)]
+    for block in blocks:
+        hit = next(iter(close_matches(_own(block.key), tuple(sorted(names)), 1, 0.8)), None)
+        if hit is not None:
+            return block, names[hit]
+    return blocks[0], users[0]
+
+
 def _stray_keys(path: str, model: Any, users: list[tuple[Any, Any]], keys: dict[int, list[Any]],
                 readers: list[Any]) -> Iterator[Diagnostic]:
     """Keys meant for a node that loads the file but gets none of its own parameters from it: the
@@ -110,9 +130,7 @@ def _stray_keys(path: str, model: Any, users: list[tuple[Any, Any]], keys: dict[
     from physai_lint.params.effective import matching_keys
     from physai_lint.params.match import explain_no_match
 
-    def own(key: str) -> str:
-        return key.rstrip("/").rsplit("/", 1)[-1]
-
+    own = _own
     matched = {id(b) for n in readers
                for b in keys.get(id(n)) or matching_keys(n.fqn, model, n.kind == "composable_node")}
     # nodes that load the file and get no key of their own from it (wildcard keys aside)

@@ -59,3 +59,31 @@ def test_a_key_for_a_node_that_has_its_own_key_is_left_alone(demo_findings) -> N
         "talker:\n  ros__parameters:\n    rate: 10\n"
         "listener:\n  ros__parameters:\n    depth: 5\n"
         "talkerr:\n  ros__parameters:\n    rate: 20\n")) == []
+
+
+NAMESPACED = """
+from launch import LaunchDescription
+from launch.substitutions import PathJoinSubstitution
+from launch_ros.actions import Node
+from launch_ros.substitutions import FindPackageShare
+
+
+def generate_launch_description():
+    params = PathJoinSubstitution([FindPackageShare('demo'), 'config', 'stack.yaml'])
+    return LaunchDescription([
+        Node(package='demo', executable='talker', name='domain_expert', namespace='robot1',
+             parameters=[params]),
+        Node(package='demo', executable='talker', name='planner', namespace='robot1',
+             parameters=[params]),
+    ])
+"""
+
+
+def test_a_whole_file_finding_explains_the_key_named_like_a_loading_node(demo_findings) -> None:
+    # no key matches under /robot1: the message pairs "planner" with /robot1/planner, not the
+    # first key ("helper_client", a node of another name) with the first node
+    found = demo_findings({"launch/a.launch.py": NAMESPACED, "config/stack.yaml": (
+        "helper_client:\n  ros__parameters:\n    timeout: 15.0\n"
+        "planner:\n  ros__parameters:\n    timeout: 15.0\n")}, "launch/a.launch.py", "P103")
+    assert [line for line, _ in found] == [4]
+    assert 'key "planner" matches /planner only; the node is /robot1/planner' in found[0][1]

@@ -8,7 +8,7 @@ from typing import Iterator
 from physai_lint.checks._util import python_facts
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic
-from physai_lint.model.launch import TypeFact
+from physai_lint.model.launch import NameFact, TypeFact
 
 NODE_CLASSES = ("launch_ros.actions.Node", "launch_ros.actions.LifecycleNode",
                 "launch_ros.actions.ComposableNodeContainer", "launch_ros.descriptions.ComposableNode",
@@ -38,11 +38,26 @@ def parameters_not_a_list(ctx: CheckContext) -> Iterator[Diagnostic]:
 def undefined_name(ctx: CheckContext) -> Iterator[Diagnostic]:
     for path, facts in python_facts(ctx):
         for fact in facts.undefined_names:
+            when = (f"{fact.function}() raises NameError when it reaches this line" if fact.function
+                    else "loading the file raises NameError")
             yield Diagnostic(
                 "L005", fact.span,
-                f'name "{fact.name}" is used but never imported or defined; loading the file raises NameError',
-                help=f'import it (e.g. "from launch_ros.actions import {fact.name}") or define it',
-                key=fact.name)
+                f'name "{fact.name}" is used but never imported or defined; {when}',
+                help=_undefined_help(fact), key=fact.name)
+
+
+def _undefined_help(fact: NameFact) -> str:
+    """Import the launch API of that name, or use the defined name it is close to."""
+    from physai_lint.closematch import close_matches
+    from physai_lint.frontends.python.api import KNOWN
+
+    modules = sorted(k.rsplit(".", 1)[0] for k in KNOWN if k.rsplit(".", 1)[-1] == fact.name)
+    if modules:
+        return f'import it: "from {modules[0]} import {fact.name}"'
+    near = close_matches(fact.name, fact.visible, 1, 0.75)
+    if near:
+        return f'did you mean "{near[0]}"? Otherwise import or define "{fact.name}"'
+    return f'import "{fact.name}" from the module that provides it, or define it'
 
 
 @rule("L006", "missing-generate-launch-description")

@@ -323,6 +323,8 @@ class NameFact:
 
     name: str
     span: Span
+    function: str = ""  # the function whose body uses it ("": the module's code)
+    visible: tuple[str, ...] = ()  # the names defined where it is used
 
 
 @dataclass(frozen=True, slots=True)

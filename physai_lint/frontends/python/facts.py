@@ -143,9 +143,10 @@ class _NameChecker:
         self.found: list[NameFact] = []
 
     def check(self, node: ast.AST, chain: list[tuple[set[str], bool]]) -> None:
-        stack: list[tuple[ast.AST, list[tuple[set[str], bool]]]] = [(node, chain)]
+        # (node, the scopes around it, the function whose body holds it: "" at module level)
+        stack: list[tuple[ast.AST, list[tuple[set[str], bool]], str]] = [(node, chain, "")]
         while stack:
-            n, ch = stack.pop()
+            n, ch, fn = stack.pop()
             if isinstance(n, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)):
                 a = n.args
                 outer = list(a.defaults) + [d for d in a.kw_defaults if d is not None]
@@ -154,31 +155,40 @@ class _NameChecker:
                     if n.returns is not None:
                         outer.append(n.returns)
                 outer += [x.annotation for x in a.posonlyargs + a.args + a.kwonlyargs if x.annotation is not None]
-                stack.extend((x, ch) for x in outer)
+                stack.extend((x, ch, fn) for x in outer)
                 body = n.body if isinstance(n.body, list) else [n.body]
                 inner = ch + [(_params(a) | _bound_in(body), False)]
-                stack.extend((x, inner) for x in body)
+                name = fn if isinstance(n, ast.Lambda) else n.name
+                stack.extend((x, inner, name) for x in body)
                 continue
             if isinstance(n, ast.ClassDef):
-                stack.extend((x, ch) for x in n.bases + n.decorator_list + [k.value for k in n.keywords])
+                stack.extend((x, ch, fn) for x in n.bases + n.decorator_list + [k.value for k in n.keywords])
                 inner = ch + [(_bound_in(n.body), True)]
-                stack.extend((x, inner) for x in n.body)
+                stack.extend((x, inner, fn) for x in n.body)
                 continue
             if isinstance(n, (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)):
                 gens = n.generators
-                stack.append((gens[0].iter, ch))
+                stack.append((gens[0].iter, ch, fn))
                 inner = ch + [(_bound_in([g.target for g in gens]), False)]
                 rest: list[ast.AST] = [gens[0].target, *gens[0].ifs]
                 for g in gens[1:]:
                     rest += [g.target, g.iter, *g.ifs]
                 rest += [n.key, n.value] if isinstance(n, ast.DictComp) else [n.elt]
-                stack.extend((x, inner) for x in rest)
+                stack.extend((x, inner, fn) for x in rest)
                 continue
             if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Load):
                 if not self._defined(n.id, ch):
-                    self.found.append(NameFact(n.id, self.spans.of(n)))
+                    self.found.append(NameFact(n.id, self.spans.of(n), fn, self._visible(ch)))
                 continue
-            stack.extend((c, ch) for c in ast.iter_child_nodes(n))
+            stack.extend((c, ch, fn) for c in ast.iter_child_nodes(n))
+
+    def _visible(self, chain: list[tuple[set[str], bool]]) -> tuple[str, ...]:
+        """The names a load at the end of ``chain`` can see (for a did-you-mean)."""
+        out = set(self.module)
+        for k, (bound, is_class) in enumerate(reversed(chain)):
+            if not (is_class and k > 0):
+                out |= bound
+        return tuple(sorted(out))
 
     def _defined(self, name: str, chain: list[tuple[set[str], bool]]) -> bool:
         for k, (bound, is_class) in enumerate(reversed(chain)):

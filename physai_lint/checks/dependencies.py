@@ -38,12 +38,47 @@ def missing_exec_depend(ctx: CheckContext) -> Iterator[Diagnostic]:
         if name in ctx.packages.exec_depends(owner.name):
             continue
         reported.add((owner.name, name))
+        excluded = getattr(ctx.packages, "excluded_depends", lambda _: {})(owner.name).get(name)
+        if excluded is not None:
+            why = (f'declares it only under the condition "{excluded}", which is false for '
+                   f'{ctx.distro}')
+            fix = (f'make the condition of the dependency on "{name}" hold for {ctx.distro}, or give '
+                   f"the launch file a branch for {ctx.distro} that does not use it")
+        else:
+            why = "does not declare it (no <exec_depend> or <depend>)"
+            fix = f'add <exec_depend>{name}</exec_depend> to the package.xml of "{owner.name}"'
+            back = _dependency_path(ctx, name, owner.name)
+            if back:
+                fix += (f'; but "{name}" already depends on "{owner.name}" ({" -> ".join(back)}), and '
+                        f"colcon cannot order packages that depend on each other: move this launch "
+                        f'file into "{name}" or a package depending on both')
         yield Diagnostic(
             "U103", span,
-            f'package "{owner.name}" uses package "{name}" in its launch files but its package.xml '
-            f'does not declare it (no <exec_depend> or <depend>)',
-            help=f'add <exec_depend>{name}</exec_depend> to the package.xml of "{owner.name}"',
-            key=f"{owner.name}->{name}")
+            f'package "{owner.name}" uses package "{name}" in its launch files but its package.xml {why}',
+            help=fix, key=f"{owner.name}->{name}")
+
+
+def _dependency_path(ctx: CheckContext, start: str, target: str, limit: int = 2000) -> list[str]:
+    """The run dependencies leading from workspace package ``start`` to ``target`` (both
+    included; the shortest), or [] when there are none among the workspace packages."""
+    workspace = getattr(ctx.packages, "workspace_package", None)
+    if workspace is None:
+        return []
+    came: dict[str, str | None] = {start: None}
+    queue = [start]
+    while queue and len(came) < limit:
+        here = queue.pop(0)
+        for dep in sorted(ctx.packages.exec_depends(here)):
+            if dep in came or workspace(dep) is None:
+                continue
+            came[dep] = here
+            if dep == target:
+                path = [dep]
+                while came[path[-1]] is not None:
+                    path.append(came[path[-1]])  # type: ignore[arg-type]
+                return path[::-1]
+            queue.append(dep)
+    return []
 
 
 def _share_path(ctx: CheckContext, arg: str) -> str | None:

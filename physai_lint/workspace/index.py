@@ -67,6 +67,8 @@ class WorkspacePackage:
     calls: frozenset[str] = field(default_factory=frozenset)
     found_packages: frozenset[str] = field(default_factory=frozenset)
     installers: frozenset[str] = field(default_factory=frozenset)
+    # run dependencies declared under a condition that is false for the distro: -> condition
+    excluded_depends: dict[str, str] = field(default_factory=dict)
 
 
 def _norm(path: str) -> str:
@@ -193,6 +195,12 @@ class PackageIndex:
     def exec_depends(self, package: str) -> dict[str, int]:
         pkg = self.packages.get(package)
         return dict(pkg.exec_depends) if pkg else {}
+
+    def excluded_depends(self, package: str) -> dict[str, str]:
+        """Run dependencies of a workspace package that its package.xml declares under a condition
+        false for this distro, with the condition."""
+        pkg = self.packages.get(package)
+        return dict(pkg.excluded_depends) if pkg else {}
 
     # ---- executables and plugins ---------------------------------------------------------------
 
@@ -814,6 +822,7 @@ def _read_package(index: PackageIndex, pkg_dir: str) -> WorkspacePackage | None:
         build_type=build_type,
         format=man.format,
         exec_depends=man.exec_depends,
+        excluded_depends=man.excluded_depends,
         executables=frozenset(info.executables),
         executables_in_bin=frozenset(info.executables_in_bin),
         scripts_dir=info.scripts_dir,

@@ -25,6 +25,8 @@ class ManifestInfo:
     format: int
     exec_depends: dict[str, int] = field(default_factory=dict)
     error: tuple[str, int] | None = None  # (message, line) when catkin_pkg rejected it
+    # run dependencies whose condition is false here (``$ROS_DISTRO != 'humble'``): -> condition
+    excluded_depends: dict[str, str] = field(default_factory=dict)
 
 
 def _line_of(text: str, pos: int) -> int:
@@ -206,11 +208,13 @@ def _parse_manifest(text: str, filename: str, distro: str) -> ManifestInfo:
     except Exception:  # noqa: BLE001, S110 - an unparsable condition keeps the dependency
         pass
     deps: dict[str, int] = {}
+    excluded: dict[str, str] = {}
     # catkin_pkg's run_depends is computed on every access as deep copies of exec_depends +
     # build_export_depends (format 1 <run_depend> fills both): read those directly, same names
     # and conditions without the copies.
     for dep in list(pkg.exec_depends) + list(pkg.build_export_depends):
         if getattr(dep, "evaluated_condition", None) is False and not can_hold(dep.condition, context):
+            excluded.setdefault(dep.name, str(dep.condition))
             continue
         deps.setdefault(dep.name, lines.get(dep.name, 1))
     try:
@@ -219,5 +223,6 @@ def _parse_manifest(text: str, filename: str, distro: str) -> ManifestInfo:
         bt = _BUILD_TYPE_RX.search(text)
         build_type = bt.group(1) if bt else "catkin"
     return ManifestInfo(
-        name=pkg.name, build_type=build_type, format=int(pkg.package_format), exec_depends=deps
+        name=pkg.name, build_type=build_type, format=int(pkg.package_format), exec_depends=deps,
+        excluded_depends={n: c for n, c in excluded.items() if n not in deps},
     )

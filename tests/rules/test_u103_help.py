@@ -1,0 +1,52 @@
+"""U103 (missing-exec-depend): a dependency declared under a condition false for the distro is
+named as such (not "no <exec_depend>"), and the help does not ask for a dependency that would
+close a cycle of packages without saying so."""
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Callable
+
+from physai_lint.engine import CheckOptions, run_check
+
+XML = """<launch>
+  <node pkg="acme_tools" exec="tool" name="tool"/>
+</launch>
+"""
+PACKAGE_XML = """<package format="3"><name>{name}</name><version>0.0.0</version><description>d</description>
+<maintainer email="m@example.com">a</maintainer><license>MIT</license>{depends}
+<export><build_type>ament_cmake</build_type></export></package>
+"""
+
+
+def _u103(tmp_path: Path, demo_package: Callable[[dict[str, str]], Path], demo_depends: str,
+          tools_depends: str = "", distro: str = "humble") -> list[tuple[str, str]]:
+    (tmp_path / "src" / "acme_tools").mkdir(parents=True)
+    (tmp_path / "src" / "acme_tools" / "package.xml").write_text(
+        PACKAGE_XML.format(name="acme_tools", depends=tools_depends))
+    pkg = demo_package({"package.xml": PACKAGE_XML.format(name="demo", depends=demo_depends),
+                        "launch/a.launch.xml": XML})
+    opts = CheckOptions(paths=[str(pkg / "launch/a.launch.xml")], workspace=str(tmp_path), cache=False,
+                        distro=distro)
+    return [(f.message, f.help) for f in run_check(opts).findings if f.code == "U103"]
+
+
+def test_a_dependency_conditioned_away_on_this_distro_is_named_with_its_condition(tmp_path, demo_package):
+    depends = "<exec_depend condition=\"$ROS_DISTRO != 'humble'\">acme_tools</exec_depend>"
+    [(message, help_)] = _u103(tmp_path, demo_package, depends)
+    assert message.endswith("declares it only under the condition \"$ROS_DISTRO != 'humble'\", "
+                            "which is false for humble")
+    assert help_.startswith('make the condition of the dependency on "acme_tools" hold for humble')
+
+
+def test_the_same_dependency_holds_on_another_distro(tmp_path, demo_package):
+    depends = "<exec_depend condition=\"$ROS_DISTRO != 'humble'\">acme_tools</exec_depend>"
+    assert _u103(tmp_path, demo_package, depends, distro="jazzy") == []
+
+
+def test_the_help_warns_when_the_dependency_would_close_a_cycle(tmp_path, demo_package):
+    [(message, help_)] = _u103(tmp_path, demo_package, "", "<exec_depend>demo</exec_depend>")
+    assert message.endswith("does not declare it (no <exec_depend> or <depend>)")
+    assert help_ == ('add <exec_depend>acme_tools</exec_depend> to the package.xml of "demo"; but '
+                     '"acme_tools" already depends on "demo" (acme_tools -> demo), and colcon cannot '
+                     'order packages that depend on each other: move this launch file into '
+                     '"acme_tools" or a package depending on both')

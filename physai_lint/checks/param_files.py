@@ -175,6 +175,34 @@ def _templated(d: Diagnostic) -> bool:
     return "$(" in d.message
 
 
+def _frontend_rejects(ctx: CheckContext, prm: Any) -> bool:
+    """Whether an XML launch file's literal list value is one launch_xml's ``Entity.get_attr``
+    rejects (``coerce_to_type`` with no type: ``is_instance_of_valid_type`` wants scalars, the
+    non-string ones of the first one's type). A substituted value passes ``get_attr`` as text and
+    fails later; launch_yaml reads typed YAML instead (``frontends/attributes.py``)."""
+    import yaml
+
+    from physai_lint.checks._util import ir_objects
+    from physai_lint.model.launch import ParamEntry
+    from physai_lint.model.values import PSubst, literal_of
+
+    file = getattr(prm.span, "file", "") or ""
+    if not file.endswith(".xml") or file not in ctx.launch_files:
+        return False
+    if not any(type(o) is ParamEntry and o.span == prm.span and type(o.value) is PSubst
+               and o.value.sep is None and isinstance(literal_of(o.value.value), str)
+               for o in ir_objects(ctx, file)):
+        return False
+    try:
+        items = yaml.safe_load(prm.raw)
+    except (yaml.YAMLError, RecursionError, ValueError):
+        return False
+    if not isinstance(items, list) or not items:
+        return False
+    first = next((type(x) for x in items if type(x) is not str), str)
+    return first not in (str, bool, int, float) or not all(isinstance(x, (first, str)) for x in items)
+
+
 @rule("P106", "mixed-type-array")
 def mixed_array(ctx: CheckContext) -> Iterator[Diagnostic]:
     for path in sorted(ctx.param_files):
@@ -198,6 +226,18 @@ def mixed_array(ctx: CheckContext) -> Iterator[Diagnostic]:
                             key=prm.name)
                         continue
                     empty = prm.raw.strip()[1:].strip() == "]"
+                    if _frontend_rejects(ctx, prm):
+                        yield Diagnostic(
+                            "P106", prm.span,
+                            f'parameter "{prm.name}" value "{prm.raw}" is a list with items that are not '
+                            "scalars of one type; launch fails reading the attribute with TypeError "
+                            "\"Attribute 'value' of Entity 'param' expected to be of type 'None'.'...' "
+                            "can not be converted to one of those types\"",
+                            help="a parameter holds a scalar or a list of scalars of one type: give each "
+                                 "mapping's fields as parameters of their own (name.field), or pass the "
+                                 "whole text as a string",
+                            key=prm.name)
+                        continue
                     yield Diagnostic(
                         "P106", prm.span,
                         f'parameter "{prm.name}" value "{prm.raw}" is '

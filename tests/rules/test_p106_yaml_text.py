@@ -29,3 +29,22 @@ def test_literal_text_is_a_string_and_substituted_text_fails(demo_findings):
         (6, 'parameter "mixed" value "[1, \'a\']" is a list with items of different types'),
     ]
     assert demo_findings({"launch/a.launch.yaml": YAML}, "launch/a.launch.yaml", "P106") == []
+
+
+def test_a_literal_xml_list_of_mappings_fails_in_get_attr_and_says_so(demo_findings):
+    # launch_xml's Entity.get_attr coerces the literal with YAML rules (no type): a list whose
+    # items are mappings, or scalars of two types, is no allowed type and raises TypeError there;
+    # the same text through a substitution passes get_attr and fails later, in launch_ros
+    xml = """<launch>
+  <arg name="o" default="[1, 2.5]"/>
+  <node pkg="demo_nodes_cpp" exec="talker" name="origin">
+    <param name="origins" value="[{name: a, lat: 1.0}, {name: b, lat: 2.0}]"/>
+    <param name="mixed" value="[1, 2.5]"/>
+    <param name="substituted" value="$(var o)"/>
+  </node>
+</launch>
+"""
+    found = demo_findings({"launch/a.launch.xml": xml}, "launch/a.launch.xml", "P106")
+    assert [(line, "reading the attribute with TypeError" in message) for line, message in found] == [
+        (4, True), (5, True), (6, False)]
+    assert "items that are not scalars of one type" in found[0][1]

@@ -20,6 +20,7 @@ that header is read when the source registers a filter's callback.
 """
 from __future__ import annotations
 
+import dataclasses
 import functools
 import posixpath
 import re
@@ -44,15 +45,18 @@ _WORD = re.compile(r"[A-Za-z_]\w*")
 
 
 def extract_linked(own: list[tuple[str, str]], library: list[tuple[str, str]], roots: list[str],
-                   cache: Any = None, read: Reader | None = None) -> NodeInterface:
+                   cache: Any = None, read: Reader | None = None, locate: Locate | None = None,
+                   package: str = "") -> NodeInterface:
     """The interface of an executable built from ``own`` sources and ``library`` sources (those
     a linked library brings), with ``roots`` the classes known to run (a component's plugin
-    class, qualified or not); ``read`` reads the headers the sources include."""
+    class, qualified or not); ``read`` reads the headers the sources include, ``locate`` those
+    of other workspace packages (``foreign_bases``)."""
     own_parts = [part for path, text in own for part in _facts(path, text, cache, read)]
     lib_parts = [(text, part) for path, text in library for part in _facts(path, text, cache, read)]
     own_parts += _header_node_sites(own, own_parts + [part for _, part in lib_parts], cache, read)
+    extra = foreign_bases(own + library, read, locate, cache, package) if locate is not None else []
     if not library:
-        return merge_facts([(part, _everything) for part in own_parts])
+        return merge_facts([(part, _everything) for part in own_parts] + extra)
     holders = {owner for _, part in lib_parts for owner in _owners(part) if owner is not None}
     runs = _running_classes(own, lib_parts, roots, read, holders)
     # Sure of what runs: a class that declares something, or a root whose code is known (a
@@ -64,7 +68,8 @@ def extract_linked(own: list[tuple[str, str]], library: list[tuple[str, str]], r
             return "unnamed"
         return owner in runs
 
-    return merge_facts([(part, _everything) for part in own_parts] + [(part, keep) for _, part in lib_parts])
+    return merge_facts([(part, _everything) for part in own_parts] + [(part, keep) for _, part in lib_parts]
+                       + extra)
 
 
 def _header_node_sites(own: list[tuple[str, str]], parts: list[CppFacts], cache: Any,
@@ -229,3 +234,122 @@ def _read_include(path: str, include: str, read: Reader) -> tuple[str, str] | No
     return None
 
 
+
+
+# ---- base classes from other workspace packages -------------------------------------------------
+
+# ``class Worker : public base_pkg::BaseClient {``: a class head with its bases
+_CLASS_BASES = re.compile(r"\b(?:class|struct)\s+(?:\w+\s+)*?(\w+)\s*(?:final\s*)?:(?!:)\s*([^{;]*)\{")
+_BASE = re.compile(r"^(?:\s*(?:public|protected|private|virtual)\b)*\s*((?:::)?[A-Za-z_][\w:]*)")
+_MAX_FOREIGN_SOURCES = 16  # sources of another package read per base class
+# an include -> (path, text, the sources of its package that hold a word) | None
+Locate = Callable[[str], "tuple[str, str, Callable[[str], list[tuple[str, str]]]] | None"]
+
+
+def foreign_bases(own: list[tuple[str, str]], read: Reader | None, locate: Locate, cache: Any = None,
+                  package: str = "") -> list[tuple[CppFacts, Callable[[str | None], bool | str]]]:
+    """What base classes defined in another workspace package declare for the classes of
+    ``own`` (the sources of an executable of ``package``, with the headers of ``package`` they
+    include): a node class
+    deriving from ``base_pkg::BaseClient`` runs its base's constructor, and the publishers it
+    makes there (PlanSys2's performers derive their action clients and status topics so).
+
+    ``locate(include)``: for ``#include "base_pkg/base_client.hpp"`` of another workspace package,
+    (the header's path, its text, a function giving that package's C++ sources that hold a word);
+    None otherwise. The base's code is its header and the sources that define its members
+    (``BaseClient::``); only the items of that class are taken, and not where it makes its node
+    (its subclass passes the name on). Its
+    endpoints are kept as their kind and type only (``unnamed``: the dangling-topic rules back off
+    for that type): a base class is often a toolbox its subclasses configure, whose members
+    subscribe only when a parameter asks for it (rtabmap_sync's ``CommonDataSubscriber`` has a
+    setup function per combination of inputs). Its parameters and lifecycle base are kept."""
+    texts = list(own)
+    if read is not None:
+        seen = {p for p, _ in own}
+        for path, text in own:
+            # the package's own headers (``"pkg/x.hpp"``), where its classes are
+            mine = [i for i in _INCLUDE.findall(text) if i.startswith(package + "/")]
+            for include in mine[:_MAX_INCLUDES]:
+                found = _read_include(path, include, read)
+                if found is not None and found[0] not in seen:
+                    seen.add(found[0])
+                    texts.append(found)
+    heads = [_class_heads(text) for _, text in texts]
+    defined = {name for names, _, _ in heads for name in names}
+    wanted = sorted({b for _, bases, _ in heads for b in bases} - defined)
+    if not wanted:
+        return []
+    includes = sorted({i for _, _, incs in heads for i in incs})
+    out: list[tuple[CppFacts, Callable[[str | None], bool | str]]] = []
+    for last in wanted:
+        for include in includes:
+            found = locate(include)
+            if found is None or not _defines_class(found[1], last):
+                continue
+            header_path, header, sources = found
+            files = [(header_path, header)] + sources(last + "::")[:_MAX_FOREIGN_SOURCES]
+            for path, text in files:
+                part = _file_interface(path, text, cache)
+                # (an endpoint of no known type is a base's generic wrapper, ``create_publisher<
+                # MessageT>(topic, ...)``: its subclasses' calls of it are extracted as their own)
+                out.append((dataclasses.replace(
+                    part, node_sites=[], makes=[],
+                    endpoints=[e for e in part.endpoints if e[1].type is not None],
+                    unnamed=[u for u in part.unnamed if u[1] is not None]),
+                    lambda owner, cls=last: "unnamed" if owner == cls else False))
+            break
+    return out
+
+
+@functools.lru_cache(maxsize=2048)
+def _defines_class(text: str, name: str) -> bool:
+    """Whether ``text`` defines class ``name`` (a body, not a declaration)."""
+    if name not in text:
+        return False
+    head = re.compile(r"\b(?:class|struct)\s+(?:\w+\s+)*?" + re.escape(name) + r"\b[^;{]*\{")
+    return head.search(blank_comments(text)) is not None
+
+
+@functools.lru_cache(maxsize=2048)
+def _class_heads(text: str) -> tuple[frozenset[str], frozenset[str], tuple[str, ...]]:
+    """The classes ``text`` defines with a base clause, the last names of their bases, and the
+    headers it includes (when it has any base clause)."""
+    # (most sources have no class head with a base clause, and nearly every base clause has an
+    # access specifier: a substring test before the regular expression)
+    if ("public" not in text and "protected" not in text and "private" not in text) or \
+            _CLASS_BASES.search(text) is None:
+        return frozenset(), frozenset(), ()
+    code = blank_comments(text)
+    defined, bases = set(), set()
+    for m in _CLASS_BASES.finditer(code):
+        defined.add(m.group(1))
+        bases.update(b.rsplit("::", 1)[-1] for b in _split_bases(m.group(2)))
+    return frozenset(defined), frozenset(bases), tuple(_INCLUDE.findall(text)) if bases else ()
+
+
+def _split_bases(clause: str) -> list[str]:
+    """The class names of a base clause (``public A<T, U>, private b::C``), without template
+    arguments."""
+    depth, start, parts = 0, 0, []
+    for i, ch in enumerate(clause):
+        if ch == "<":
+            depth += 1
+        elif ch == ">":
+            depth = max(0, depth - 1)
+        elif ch == "," and depth == 0:
+            parts.append(clause[start:i])
+            start = i + 1
+    parts.append(clause[start:])
+    out = []
+    for part in parts:
+        m = _BASE.match(part.split("<", 1)[0])
+        if m:
+            out.append(m.group(1).lstrip(":"))
+    return out
+
+
+def blank_comments(text: str) -> str:
+    """``text`` with its comments blanked (a class head in a comment names no base)."""
+    if "/" not in text:
+        return text
+    return re.sub(r"//[^\n]*|/\*[\s\S]*?\*/", " ", text)

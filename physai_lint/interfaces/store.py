@@ -293,6 +293,7 @@ class InterfaceStore:
         self.diagnostics: list[Diagnostic] = []
         self._cache: dict[Key, NodeInterface | None] = {}
         self._extracted: dict[Key, NodeInterface] = {}
+        self._foreign: dict[tuple[str, str], Any] = {}  # (package, include) -> _foreign_header's
 
     def add_extracted(self, package: str, executable: str, files: list[tuple[str, str]],
                       library: list[tuple[str, str]] | None = None,
@@ -305,7 +306,8 @@ class InterfaceStore:
         py = [(p, t) for p, t in files if p.endswith(".py")]
         layers = []
         if cpp or lib:
-            layers.append(extract_linked(cpp, lib, list(roots or ()), self.cache, self._read))
+            layers.append(extract_linked(cpp, lib, list(roots or ()), self.cache, self._read,
+                                         self._foreign_header(package), package))
         if py:
             layers.append(extract_py(py, self._read))
         merged = merge(layers) if layers else None
@@ -339,6 +341,51 @@ class InterfaceStore:
             iface.parameters.update(decls)  # type: ignore[union-attr]
             iface.parameter_patterns.extend(patterns)
         return iface
+
+    def _foreign_header(self, package: str) -> Any:
+        """``linked.foreign_bases``'s ``locate`` for the executables of ``package``: a header
+        ``#include "p/x.hpp"`` names in another workspace package ``p`` (under its ``include/``),
+        with that package's C++ sources."""
+        workspace = getattr(self.packages, "workspace_package", None)
+        mine = workspace(package) if workspace is not None else None
+        if mine is None:
+            return None
+        # a base class of another package needs that package to build: a <depend> on it, or a
+        # find_package() of it (ament_cmake_auto finds the manifest's <depend>s)
+        others = {n for n in (*mine.exec_depends, *mine.found_packages) if n != package and workspace(n)}
+        if not others:
+            return None
+
+        def locate(include: str) -> tuple[str, str, Any] | None:
+            key = (package, include)
+            if key not in self._foreign:
+                self._foreign[key] = find(include)
+            return self._foreign[key]
+
+        def find(include: str) -> tuple[str, str, Any] | None:
+            name = include.split("/", 1)[0]
+            if name not in others or "/" not in include:
+                return None
+            pkg = workspace(name)
+            if pkg is None:
+                return None
+            path = f"{pkg.path}/include/{include}"
+            text = self._read(path)
+            if text is None:
+                return None
+
+            found: dict[str, list[tuple[str, str]]] = {}
+
+            def sources(word: str) -> list[tuple[str, str]]:
+                if word not in found:
+                    found[word] = [(f"{pkg.path}/{rel}", t) for rel in sorted(pkg.files)
+                                   if rel.endswith((".cpp", ".cc", ".cxx")) and not rel.startswith("test")
+                                   and (t := self._read(f"{pkg.path}/{rel}")) is not None and word in t]
+                return found[word]
+
+            return path, text, sources
+
+        return locate
 
     def _read(self, path: str) -> str | None:
         reader = getattr(self.packages, "read_text", None)

@@ -10,6 +10,7 @@ from dataclasses import replace
 from typing import TYPE_CHECKING
 
 from physai_lint.model import launch as ir
+from physai_lint.model.launch import EVERY_CONFIGURATION
 from physai_lint.resolve.evaluate import Scope
 from physai_lint.resolve.model import IncludeRecord
 
@@ -82,8 +83,8 @@ def include(inst: Instantiator, a: ir.Include, scope: Scope) -> None:
     }))
     if source not in inst.result.files:
         inst.result.files.append(source)
-    n_decl, n_reads, n_opaque = (len(inst.result.declared_args), len(inst.result.config_reads),
-                                 len(inst.result.opaque))
+    n_decl, n_reads, n_opaque, n_inc = (len(inst.result.declared_args), len(inst.result.config_reads),
+                                        len(inst.result.opaque), len(inst.result.includes))
     scope.locals["current_launch_file_directory"] = posixpath.dirname(path)
     scope.locals["current_launch_file_path"] = path
     scope.locals["_owner"] = source
@@ -97,4 +98,10 @@ def include(inst: Instantiator, a: ir.Include, scope: Scope) -> None:
     else:
         names = {d.name for d in inst.result.declared_args[n_decl:]}
         names |= {r.name for r in inst.result.config_reads[n_reads:]}
-        rec.declared = tuple(sorted(names))
+        # configurations a Python file hands to code the linter cannot follow (a helper module's
+        # function given LaunchConfiguration('limited')): that code may read them at launch
+        walked = {source} | {r.target_source for r in inst.result.includes[n_inc:]
+                             if r.status == "ok" and r.target_source}
+        for file in sorted(walked):
+            names.update(getattr(getattr(inst.loader(file), "python", None), "escaped", ()))
+        rec.declared = None if EVERY_CONFIGURATION in names else tuple(sorted(names))

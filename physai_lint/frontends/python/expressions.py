@@ -140,6 +140,9 @@ class ExpressionsMixin:
                 continue
             t = self.tested(last, e, scope) if k < len(n.values) - 1 else truth(last)  # the last is not tested
             if t is None:
+                # the operands after it may run: what they read (``b.perform(context)``) is read
+                for rest in n.values[k + 1:]:
+                    self.ev(rest, scope)
                 return Opaque("boolean operation on an unknown value", self.span(n, scope))
             if t is not is_and:
                 return last if not syms else Opaque("mixed condition", self.span(n, scope))

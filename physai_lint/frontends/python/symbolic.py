@@ -47,6 +47,8 @@ class Recorder:
                     name = v.arg(0, "variable_name")
                     if isinstance(name, str):
                         self.escaped.add(str(name))
+                        # its default is read when the configuration is unset (``default=dof``)
+                        self.escape([v.kwargs[k] for k in ("default",) if k in v.kwargs], depth + 1)
                         continue
                 self.escape([*v.args, *v.kwargs.values()], depth + 1)
             elif isinstance(v, (list, tuple)):

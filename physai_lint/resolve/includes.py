@@ -88,7 +88,8 @@ def include(inst: Instantiator, a: ir.Include, scope: Scope) -> None:
     scope.locals["current_launch_file_directory"] = posixpath.dirname(path)
     scope.locals["current_launch_file_path"] = path
     scope.locals["_owner"] = source
-    inst.frame = replace(fr, file=source, chain=fr.chain + (source,), passed=frozenset(passed))
+    inst.frame = replace(fr, file=source, chain=fr.chain + (source,), passed=frozenset(passed),
+                         dir=posixpath.dirname(path))
     try:
         inst._walk(lf.actions, scope)
     finally:

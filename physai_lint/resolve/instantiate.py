@@ -50,6 +50,9 @@ class Frame:
     trigger: list[tuple[str, str, Span]] = field(default_factory=list)  # (action key, reason, span)
     lost: tuple[str, ...] = ()
     passed: frozenset[str] = frozenset()  # args the include that loaded this file passed
+    # the directory launch runs the file from: the include's path (an installed share directory
+    # for FindPackageShare), not where its source is; "" for the file's own directory
+    dir: str = ""
 
 
 @dataclass(slots=True)
@@ -117,7 +120,8 @@ class Instantiator:
         owner = scope.locals.get("_owner")
         if span is not None and owner and owner != self.frame.file and self.frame.deferred is None:
             got = scope.locals.get("current_launch_file_directory", "")
-            self.result.dirname_traps.append((span, str(got), posixpath.dirname(self.frame.file)))
+            own = self.frame.dir or posixpath.dirname(self.frame.file)
+            self.result.dirname_traps.append((span, str(got), own))
 
     def _on_bad_condition(self, span: Span | None, text: str) -> None:
         if span is not None and self.frame.active is not False:

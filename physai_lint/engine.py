@@ -179,7 +179,7 @@ def _sort_out(store: FileStore, found: Any) -> list[tuple[str, str]]:
     for path in found.launch_files:  # found by a *launch.py name: left out if only the name says so
         if path not in explicit:
             text = store.peek(path)
-            if text is not None and only_named_launch(text):
+            if text is not None and (only_named_launch(text) or _package_module(path, text)):
                 launch.discard(path)
     for path in found.undecided:
         name = os.path.basename(path)
@@ -195,6 +195,17 @@ def _sort_out(store: FileStore, found: Any) -> list[tuple[str, str]]:
             skipped.append((path, verdict.reason or "not a launch or parameter file"))
     found.launch_files, found.param_files = sorted(launch), sorted(params)
     return skipped
+
+
+def _package_module(path: str, text: str) -> bool:
+    """A module named ``launch.py`` in a Python package (an ``__init__.py`` beside it) that defines
+    no ``generate_launch_description``: a library of launch helpers the package's launch files
+    import (``vrx_gz/launch.py``), not a file ``ros2 launch`` runs. (``x_launch.py`` there is a
+    launch file by its name.)"""
+    from physai_lint.sniff import defines_entry
+
+    return os.path.basename(path) == "launch.py" and not defines_entry(text) and \
+        os.path.isfile(os.path.join(os.path.dirname(path), "__init__.py"))
 
 
 def _param_sources(r: Any, composable_only: bool = False) -> set[str]:

@@ -176,3 +176,20 @@ def test_a_python_module_only_named_like_a_launch_file_is_left_out(tmp_path):
     assert [(os.path.basename(f.span.file), f.code) for f in report.findings] == [("broken_launch.py", "L006")]
     report = run_check(CheckOptions(paths=[str(tasks / "launch.py")], workspace=str(tmp_path), cache=False))
     assert [f.code for f in report.findings] == ["L006"]
+
+
+def test_a_launch_helper_module_of_a_python_package_is_left_out(tmp_path):
+    """``vrx_gz/launch.py`` beside an ``__init__.py`` imports launch and builds actions for the
+    package's launch files to call: a module, not a file ros2 launch runs (no L006). A launch file
+    in such a folder that defines the entry is still checked."""
+    from physai_lint.engine import CheckOptions, run_check
+
+    pkg = tmp_path / "src" / "sim" / "src" / "sim"
+    pkg.mkdir(parents=True)
+    (pkg / "__init__.py").write_text("")
+    (pkg / "launch.py").write_text("from launch_ros.actions import Node\n\n\ndef spawn(name):\n"
+                                   "    return [Node(package='sim', executable=name)]\n")
+    (pkg / "demo_launch.py").write_text("from launch import LaunchDescription\n\n\ndef generate():\n"
+                                        "    return LaunchDescription([])\n")
+    report = run_check(CheckOptions(paths=[str(tmp_path / "src")], workspace=str(tmp_path), cache=False))
+    assert [(os.path.basename(f.span.file), f.code) for f in report.findings] == [("demo_launch.py", "L006")]

@@ -218,7 +218,7 @@ def _yaml_types(el: Element, accepted: frozenset[str]) -> Iterator[Diagnostic]:
             if kind is bool:
                 continue
             if kind is str:
-                yield _truthy(attr, tag, name, f"write a YAML boolean: {name}: false")
+                yield _truthy(attr, tag, name, _yaml_boolean_help(attr.text, name))
                 continue
             yield _type_error(attr, tag, name, kind, bool, f"write {name}: true or {name}: false")
         elif name in _BOOL_OR_SUBST.get(tag, ()):
@@ -302,6 +302,16 @@ def _type_error(attr: Attr, tag: str, name: str, kind: type, want: type, help_: 
         f"{want.__name__} here; it fails with TypeError \"Attribute '{name}' of Entity '{tag}' "
         f"expected to be of type '<class '{want.__name__}'>', got '<class '{got}'>'\"",
         help_, f"{tag}:{name}:{got}")
+
+
+def _yaml_boolean_help(text: str, name: str) -> str:
+    """The YAML boolean a string given to a boolean key means (``scoped: "true"`` ->
+    ``scoped: true``): the help must not turn the key off when the text meant on."""
+    meant = text.strip().lower()
+    if "$(" not in text and meant in ("true", "yes", "on", "1"):
+        return f'write a YAML boolean: {name}: true (the same here, but a quoted "false" is on too)'
+    return f"write a YAML boolean: {name}: false" if meant in ("false", "no", "off", "0") \
+        else f"write a YAML boolean: {name}: true or {name}: false"
 
 
 def _truthy(attr: Attr, tag: str, name: str, help_: str) -> Diagnostic:

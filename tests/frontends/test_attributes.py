@@ -219,3 +219,15 @@ def test_yaml_mapping_for_a_parameter_value() -> None:
     assert found(text) == [("L010", 7, "param:value:dict")]
     markup = ir_of(text).markup
     assert markup is not None and unknown_markup(markup, "yaml") == []
+
+
+@pytest.mark.parametrize("value, help_", [
+    ('"true"', 'write a YAML boolean: scoped: true (the same here, but a quoted "false" is on too)'),
+    ('"false"', "write a YAML boolean: scoped: false"),
+    ('"maybe"', "write a YAML boolean: scoped: true or scoped: false"),
+])
+def test_yaml_boolean_help_writes_the_boolean_the_text_means(value: str, help_: str) -> None:
+    from physai_lint.frontends.yaml_launch import parse_yaml_launch as parse
+
+    lf = parse("/ws/a.launch.yaml", f"launch:\n- group:\n    scoped: {value}\n    children:\n    - log: {{message: a}}\n")
+    assert [d.help for d in lf.diagnostics if d.code == "L010"] == [help_]

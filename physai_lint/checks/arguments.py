@@ -3,6 +3,7 @@ L103 argument-not-in-choices, L104 missing-required-argument."""
 from __future__ import annotations
 
 from collections.abc import Iterator
+from typing import Any
 
 from physai_lint.checks._util import relpath, suggestion
 from physai_lint.checks.base import CheckContext, rule
@@ -127,6 +128,32 @@ def missing_required(ctx: CheckContext) -> Iterator[Diagnostic]:
                     help=f'pass "{name}" in launch_arguments / <arg name="{name}" value="..."/>, '
                          "or give the declaration a default_value",
                     key=name)
+        yield from _entry_missing(ctx, launch, seen)
+
+
+def _entry_missing(ctx: CheckContext, launch: Any, seen: set[object]) -> Iterator[Diagnostic]:
+    """The entry file's unconditional arguments without a default that the run's NAME:=VALUE
+    arguments leave out: ``ros2 launch`` includes the entry with them and fails. Only for a run
+    that gives arguments (it describes one invocation); without any, a required argument is the
+    file's design, to be given by whoever starts it."""
+    from physai_lint.resolve.includes import declared_arguments
+
+    lf = ctx.launch_files.get(launch.entry)
+    if not launch.given or lf is None:
+        return
+    given = ", ".join(launch.given)
+    for decl, conditional in declared_arguments(lf.actions):
+        if conditional or decl.default is not None or decl.name in launch.given or \
+                (decl.span, decl.name) in seen:
+            continue
+        seen.add((decl.span, decl.name))
+        yield Diagnostic(
+            "L104", decl.span,
+            f'required argument "{decl.name}" of the launched file is not among the arguments of '
+            f"the run (given: {given}); ros2 launch fails with \"Included launch description "
+            f"missing required argument '{decl.name}'\"",
+            help=f"add {decl.name}:=VALUE to the command line, or give the declaration a default_value",
+            key=decl.name)
 
 
 def _short(path: str) -> str:

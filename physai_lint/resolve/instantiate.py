@@ -129,7 +129,7 @@ class Instantiator:
 
     # ---- entry -------------------------------------------------------------------------------
     def run(self, entry: str, cli_args: dict[str, str]) -> LaunchResult:
-        self.result = LaunchResult(entry=entry, arguments=dict(cli_args))
+        self.result = LaunchResult(entry=entry, arguments=dict(cli_args), given=tuple(sorted(cli_args)))
         self.declared_by_name: dict[str, list[DeclaredArg]] = {}  # result.declared_args by name
         scope = Scope(configs=dict(cli_args))
         self.top_configs = scope.configs

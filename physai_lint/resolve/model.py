@@ -177,6 +177,7 @@ class StartEdge:
 class LaunchResult:
     entry: str
     arguments: dict[str, str | None]  # given on the command line plus declared defaults
+    given: tuple[str, ...] = ()  # the names given on the command line (NAME:=VALUE)
     nodes: list[NodeInstance] = field(default_factory=list)
     config_reads: list[ConfigRead] = field(default_factory=list)
     declared_args: list[DeclaredArg] = field(default_factory=list)

@@ -113,3 +113,27 @@ def test_unknown_format() -> None:
     p, cwd = _plan(FIXTURES / "chain_ws", "src/demo/launch/chain.launch.py")
     with pytest.raises(ValueError):
         render_plan(p, "svg", cwd)
+
+
+def test_parts_that_cannot_be_known_are_listed_not_silently_left_out(tmp_path, demo_package) -> None:
+    """An include outside the workspace or a helper the linter cannot follow may start processes
+    the plan cannot show: the text and JSON forms say so, with where and why."""
+    launch = (
+        "from launch import LaunchDescription\n"
+        "from launch.actions import IncludeLaunchDescription\n"
+        "from launch.launch_description_sources import PythonLaunchDescriptionSource\n"
+        "from launch_ros.actions import Node\n"
+        "from my_helpers import spawn\n\n\n"
+        "def generate_launch_description():\n"
+        "    return LaunchDescription([\n"
+        "        Node(package='demo', executable='talker'),\n"
+        "        spawn('robot'),\n"
+        "        IncludeLaunchDescription(PythonLaunchDescriptionSource('/opt/other/launch/x.launch.py')),\n"
+        "    ])\n")
+    demo_package({"launch/a.launch.py": launch})
+    opts = CheckOptions(paths=[], workspace=str(tmp_path))
+    text = plan(opts, "src/demo/launch/a.launch.py", "text", cwd=str(tmp_path))
+    assert "1 process in 1 stage(s)" in text
+    assert "Not shown: 2 part(s) of the launch cannot be known statically and may start more:" in text
+    data = json.loads(plan(opts, "src/demo/launch/a.launch.py", "json", cwd=str(tmp_path)))
+    assert [(u["line"], u["reason"].split(" ")[0]) for u in data["unknown"]] == [(11, "call"), (12, "include")]

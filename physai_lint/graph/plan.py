@@ -99,6 +99,9 @@ class Plan:
     critical_delay: float = 0.0
     never_started: list[tuple[Span, str]] = field(default_factory=list)
     never_starts: set[str] = field(default_factory=set)  # their handlers wait on events that never come
+    # parts of the launch the linter cannot know statically (an OpaqueFunction it cannot follow,
+    # an include outside the workspace): they may start processes the plan does not show
+    unknown: list[tuple[Span, str]] = field(default_factory=list)
 
     @property
     def labels(self) -> dict[str, str]:
@@ -281,7 +284,8 @@ def _skeleton(launch: LaunchResult, effective_params: Callable[[NodeInstance], d
     pair) and the startable vertices: everything before any graph work."""
     nodes = [n for n in launch.nodes if n.active is not False]
     labels = _labels(nodes)
-    plan = Plan(launch.entry, never_started=list(launch.never_started))
+    plan = Plan(launch.entry, never_started=list(launch.never_started),
+                unknown=sorted(set(launch.opaque), key=lambda o: (o[0].file, o[0].line, o[0].col, o[1])))
     for n in nodes:
         plan.vertices[n.id] = PlanVertex(
             n.id, labels[n.id], n.fqn, n.kind, n.package, n.executable, n.file, n.span.line,

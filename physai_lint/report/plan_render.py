@@ -129,6 +129,9 @@ def _vertex_line(v: PlanVertex, width: int, cwd: str, never: bool = False) -> st
     return f"{v.label:<{width}}  {what}{tail}  {_rel(v.file, cwd)}:{v.line}"
 
 
+_MAX_UNKNOWN = 10  # unknown parts listed in the text form
+
+
 def _text(plan: Plan, cwd: str) -> str:
     from rich.console import Console
     from rich.text import Text
@@ -141,8 +144,9 @@ def _text(plan: Plan, cwd: str) -> str:
     n_hard = sum(1 for e in plan.edges if not e.soft)
     n_soft = len(plan.edges) - n_hard
     console.print(f"Startup plan: {_rel(plan.entry, cwd)}")
-    console.print(f"{len(plan.vertices)} processes in {len(plan.stages)} stage(s); {n_hard} ordering edge(s); "
-                  f"{n_soft} topic need(s) (shown with ~, they do not change the stages)")
+    n = len(plan.vertices)
+    console.print(f"{n} process{'' if n == 1 else 'es'} in {len(plan.stages)} stage(s); {n_hard} ordering "
+                  f"edge(s); {n_soft} topic need(s) (shown with ~, they do not change the stages)")
     for i, stage in enumerate(plan.stages, 1):
         width = min(max(len(plan.vertices[v].label) for v in stage), 40)
         title = "starts with the launch" if i == 1 else f"after stage {i - 1}"
@@ -167,6 +171,13 @@ def _text(plan: Plan, cwd: str) -> str:
         console.print("  (more cycles not shown)")
     for span, msg in plan.never_started:
         console.print(f"Never fires: handler at {_rel(span.file, cwd)}:{span.line}: {msg}")
+    if plan.unknown:
+        console.print(f"Not shown: {len(plan.unknown)} part(s) of the launch cannot be known statically "
+                      "and may start more:")
+        for span, reason in plan.unknown[:_MAX_UNKNOWN]:
+            console.print(f"  {_rel(span.file, cwd)}:{span.line}: {reason}")
+        if len(plan.unknown) > _MAX_UNKNOWN:
+            console.print(f"  ... and {len(plan.unknown) - _MAX_UNKNOWN} more (--format json lists them all)")
     console.print("Legend: <- must start first (event handler, timer, container, lifecycle manager); "
                   "~ data it subscribes to (soft)")
     return "\n".join(line.rstrip() for line in buf.getvalue().rstrip().splitlines()) + "\n"
@@ -197,6 +208,7 @@ def _json(plan: Plan, cwd: str) -> dict[str, Any]:
         "critical_path": {"nodes": plan.critical_path, "delay": plan.critical_delay},
         "never_started": [{"file": _rel(s.file, cwd), "line": s.line, "message": m}
                           for s, m in plan.never_started],
+        "unknown": [{"file": _rel(s.file, cwd), "line": s.line, "reason": m} for s, m in plan.unknown],
     }
 
 

@@ -35,7 +35,8 @@ def missing_exec_depend(ctx: CheckContext) -> Iterator[Diagnostic]:
             continue
         if (owner.name, name) in reported or not ctx.packages.has_package(name):
             continue
-        if name in ctx.packages.exec_depends(owner.name):
+        declared = ctx.packages.exec_depends(owner.name)
+        if name in declared or _through(ctx, declared, name):
             continue
         reported.add((owner.name, name))
         excluded = getattr(ctx.packages, "excluded_depends", lambda _: {})(owner.name).get(name)
@@ -56,6 +57,46 @@ def missing_exec_depend(ctx: CheckContext) -> Iterator[Diagnostic]:
             "U103", span,
             f'package "{owner.name}" uses package "{name}" in its launch files but its package.xml {why}',
             help=fix, key=f"{owner.name}->{name}")
+
+
+# Released metapackages and members they have exec_depended on in every release since humble
+# (their package.xml): a package declaring the metapackage gets these installed by rosdep. A
+# subset where releases differ (ros2_control added joint_limits and transmission_interface later).
+METAPACKAGES: dict[str, frozenset[str]] = {
+    "ros2_control": frozenset({"controller_interface", "controller_manager", "hardware_interface",
+                               "ros2controlcli", "ros2_control_test_assets"}),
+    "gazebo_ros_pkgs": frozenset({"gazebo_dev", "gazebo_msgs", "gazebo_plugins", "gazebo_ros"}),
+    "vision_opencv": frozenset({"cv_bridge", "image_geometry"}),
+    "image_common": frozenset({"camera_calibration_parsers", "camera_info_manager", "image_transport"}),
+    "perception_pcl": frozenset({"pcl_conversions", "pcl_ros"}),
+}
+
+
+def _through(ctx: CheckContext, declared: dict[str, int], name: str) -> bool:
+    """Whether a declared dependency brings ``name`` at run time: a metapackage holding it
+    (``METAPACKAGES``), or a workspace package whose run dependencies reach it."""
+    if any(name in METAPACKAGES.get(dep, ()) for dep in declared):
+        return True
+    return any(name in _reached(ctx, dep) for dep in declared)
+
+
+def _reached(ctx: CheckContext, start: str) -> frozenset[str]:
+    """The run dependencies of workspace package ``start``, through the workspace packages
+    among them (memoised per run); empty for a package outside the workspace."""
+    memo: dict[str, frozenset[str]] = ctx.options.setdefault("_run_closure", {})
+    if start in memo:
+        return memo[start]
+    out: set[str] = set()
+    todo = [start] if ctx.packages.workspace_package(start) is not None else []
+    seen = set(todo)
+    while todo and len(seen) < 5000:
+        for dep in ctx.packages.exec_depends(todo.pop()):
+            out.add(dep)
+            if dep not in seen and ctx.packages.workspace_package(dep) is not None:
+                seen.add(dep)
+                todo.append(dep)
+    memo[start] = frozenset(out)
+    return memo[start]
 
 
 def _dependency_path(ctx: CheckContext, start: str, target: str, limit: int = 2000) -> list[str]:

@@ -50,3 +50,24 @@ def test_the_help_warns_when_the_dependency_would_close_a_cycle(tmp_path, demo_p
                      '"acme_tools" already depends on "demo" (acme_tools -> demo), and colcon cannot '
                      'order packages that depend on each other: move this launch file into '
                      '"acme_tools" or a package depending on both')
+
+
+def test_a_dependency_brought_by_a_declared_metapackage_or_workspace_package_is_declared(
+        tmp_path, demo_package):
+    # <depend>ros2_control</depend> installs controller_manager; a workspace package declared
+    # as a dependency brings its own run dependencies along
+    xml = """<launch>
+  <node pkg="controller_manager" exec="spawner" args="arm_controller"/>
+  <node pkg="acme_tools" exec="tool" name="tool"/>
+</launch>
+"""
+    (tmp_path / "src" / "acme_bringup").mkdir(parents=True)
+    (tmp_path / "src" / "acme_bringup" / "package.xml").write_text(
+        PACKAGE_XML.format(name="acme_bringup", depends="<exec_depend>acme_tools</exec_depend>"))
+    (tmp_path / "src" / "acme_tools").mkdir(parents=True)
+    (tmp_path / "src" / "acme_tools" / "package.xml").write_text(PACKAGE_XML.format(name="acme_tools", depends=""))
+    depends = "<depend>ros2_control</depend><exec_depend>acme_bringup</exec_depend>"
+    pkg = demo_package({"package.xml": PACKAGE_XML.format(name="demo", depends=depends),
+                        "launch/a.launch.xml": xml})
+    opts = CheckOptions(paths=[str(pkg / "launch/a.launch.xml")], workspace=str(tmp_path), cache=False)
+    assert [f.message for f in run_check(opts).findings if f.code == "U103"] == []

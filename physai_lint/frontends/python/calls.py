@@ -82,6 +82,10 @@ def get_attr(ev: Evaluator, obj: Any, attr: str, span: Span) -> Any:
         if attr in ("name", "stem", "suffix") and isinstance(obj.path, str):
             name = posixpath.basename(obj.path)
             return {"name": name, "stem": posixpath.splitext(name)[0], "suffix": posixpath.splitext(name)[1]}[attr]
+    if isinstance(obj, LObj) and attr == "name" and obj.qual == "launch.actions.DeclareLaunchArgument":
+        name = obj.arg(0, "name")  # ``{a.name: LaunchConfiguration(a.name) for a in args}``
+        if isinstance(name, str):
+            return name
     if isinstance(obj, (LObj, ContextSym, LaunchConfigsSym, SymStr, KPath, FileHandle, str, list, dict, tuple)):
         return BoundMethod(obj, attr)
     return Opaque(f'attribute "{attr}" cannot be evaluated statically', span)
@@ -186,6 +190,12 @@ def call_user(ev: Evaluator, f: UserFunc, args: list[Any], kwargs: dict[str, Any
 
     if ev.depth >= MAX_DEPTH:
         return Opaque("call depth limit reached (recursive helper?)", span)
+    if any(isinstance(v, Opaque) for v in [*args, *kwargs.values()]) and \
+            any(g.node is f.node for g, _ in ev.frames):
+        # a recursive helper walking data not known statically (flatten(yaml.safe_load(f))): each
+        # level tries every branch of its unknown tests, so the walk grows exponentially
+        return Opaque(f'recursive call of "{getattr(f.node, "name", "lambda")}" on a value not known '
+                      "statically", span)
     if f.memo is not None:
         return _call_cached(ev, f, args, kwargs, span)
     a = f.node.args

@@ -252,6 +252,14 @@ def _dangling(ctx: CheckContext, mine: str, other: str, code: str) -> Iterator[D
                 by_topic.setdefault(o.resolved, set()).add(o.node)
                 types.setdefault(o.resolved, set()).add(o.type)
         others = set(by_topic)
+        # T202's near miss has subscribers and no publisher (a topic somebody publishes, under its
+        # name or one known only at run time, is connected already)
+        served: set[str] = set()
+        if mine == "publisher":
+            served = {e.resolved for e in g.of_kind(mine) if e.resolved}
+            served |= {t for t in others
+                       if any(kind == mine and (typ is None or None in types[t] or typ in types[t])
+                              for _, kind, typ in g.unnamed)}
         # A near miss is another node's topic: a filter's "output/pointcloud" is not a misspelt
         # "input/pointcloud" of the same filter (its own topics are left out of the suggestions).
         own: dict[str, set[str]] = {}
@@ -280,7 +288,7 @@ def _dangling(ctx: CheckContext, mine: str, other: str, code: str) -> Iterator[D
                 continue
             seen.add((span, e.resolved))
             # a near miss carries the same messages: /joint_states is no misspelt /tf_static
-            candidates = {t for t in others - own.get(e.node, set())
+            candidates = {t for t in others - own.get(e.node, set()) - served
                           if e.type is None or None in types[t] or e.type in types[t]}
             close = similar(e.resolved, candidates, 0.8 if mine == "publisher" else 0.6)
             if near_miss_only and not close:

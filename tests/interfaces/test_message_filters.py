@@ -119,8 +119,7 @@ public:
 """
 TALKER = """int main() {
   auto node = rclcpp::Node::make_shared("talker");
-  auto pub = node->create_publisher<nav_msgs::msg::Odometry>("acceleration/filtered", 10);
-  auto pub2 = node->create_publisher<nav_msgs::msg::Odometry>("acceleration/filtred", 10);
+  auto pub = node->create_publisher<nav_msgs::msg::Odometry>("acceleration/filtred", 10);
 }
 """
 PAIR = """<launch>
@@ -133,7 +132,8 @@ PAIR = """<launch>
 def test_a_message_filters_subscription_is_a_subscriber(demo_findings: Any) -> None:
     files = {"CMakeLists.txt": PAIR_CMAKE, "src/listener.cpp": LISTENER, "src/talker.cpp": TALKER,
              "launch/pair.launch.xml": PAIR}
-    # the misspelt one dangles; the one the filter subscribes to does not
+    # the misspelt one dangles, and the filter's subscription is the near miss that says so (a
+    # near miss has subscribers and no publisher)
     assert [m for _, m in demo_findings(files, "launch/pair.launch.xml", "T202")] == [
         ('/talker publishes "/acceleration/filtred" but nothing subscribes to it '
          '(did you mean "/acceleration/filtered"?)')]

@@ -241,7 +241,7 @@ def _dangling(ctx: CheckContext, mine: str, other: str, code: str) -> Iterator[D
     for g in graphs(ctx):
         if g.has_unknown_endpoints():
             continue  # some node's topics are unknown: it might be the missing end
-        if len({e.node for e in g.endpoints}) < 2:
+        if len({e.node for e in g.endpoints if e.kind in ("publisher", "subscriber")}) < 2:
             continue  # a launch of one node (a filter, a driver): its inputs and outputs are others'
         by_topic: dict[str, set[str]] = {}  # topic -> nodes with an endpoint of the other kind
         types: dict[str, set[str | None]] = {}  # topic -> the message types of those endpoints

@@ -136,15 +136,14 @@ def _entry_missing(ctx: CheckContext, launch: Any, seen: set[object]) -> Iterato
     arguments leave out: ``ros2 launch`` includes the entry with them and fails. Only for a run
     that gives arguments (it describes one invocation); without any, a required argument is the
     file's design, to be given by whoever starts it."""
-    from physai_lint.resolve.includes import declared_arguments
+    from physai_lint.resolve.includes import required_missing
 
     lf = ctx.launch_files.get(launch.entry)
     if not launch.given or lf is None:
         return
     given = ", ".join(launch.given)
-    for decl, conditional in declared_arguments(lf.actions):
-        if conditional or decl.default is not None or decl.name in launch.given or \
-                (decl.span, decl.name) in seen:
+    for decl in required_missing(lf.actions, launch.given):
+        if (decl.span, decl.name) in seen:
             continue
         seen.add((decl.span, decl.name))
         yield Diagnostic(

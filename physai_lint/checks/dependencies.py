@@ -77,49 +77,40 @@ def _through(ctx: CheckContext, declared: dict[str, int], name: str) -> bool:
     (``METAPACKAGES``), or a workspace package whose run dependencies reach it."""
     if any(name in METAPACKAGES.get(dep, ()) for dep in declared):
         return True
-    return any(name in _reached(ctx, dep) for dep in declared)
+    return any(name in _run_closure(ctx, dep) for dep in declared)
 
 
-def _reached(ctx: CheckContext, start: str) -> frozenset[str]:
-    """The run dependencies of workspace package ``start``, through the workspace packages
-    among them (memoised per run); empty for a package outside the workspace."""
-    memo: dict[str, frozenset[str]] = ctx.options.setdefault("_run_closure", {})
+def _run_closure(ctx: CheckContext, start: str, limit: int = 5000) -> dict[str, str]:
+    """The run dependencies of workspace package ``start``, through the workspace packages among
+    them, each with the package that first declares it (breadth first: shortest chains); empty
+    for a package outside the workspace. Memoised per run."""
+    memo: dict[str, dict[str, str]] = ctx.options.setdefault("_run_closure", {})
     if start in memo:
         return memo[start]
-    out: set[str] = set()
-    todo = [start] if ctx.packages.workspace_package(start) is not None else []
-    seen = set(todo)
-    while todo and len(seen) < 5000:
-        for dep in ctx.packages.exec_depends(todo.pop()):
-            out.add(dep)
-            if dep not in seen and ctx.packages.workspace_package(dep) is not None:
-                seen.add(dep)
-                todo.append(dep)
-    memo[start] = frozenset(out)
-    return memo[start]
-
-
-def _dependency_path(ctx: CheckContext, start: str, target: str, limit: int = 2000) -> list[str]:
-    """The run dependencies leading from workspace package ``start`` to ``target`` (both
-    included; the shortest), or [] when there are none among the workspace packages."""
-    workspace = getattr(ctx.packages, "workspace_package", None)
-    if workspace is None:
-        return []
-    came: dict[str, str | None] = {start: None}
-    queue = [start]
+    came: dict[str, str] = {}
+    queue = [start] if ctx.packages.workspace_package(start) is not None else []
     while queue and len(came) < limit:
         here = queue.pop(0)
         for dep in sorted(ctx.packages.exec_depends(here)):
-            if dep in came or workspace(dep) is None:
+            if dep == start or dep in came:
                 continue
             came[dep] = here
-            if dep == target:
-                path = [dep]
-                while came[path[-1]] is not None:
-                    path.append(came[path[-1]])  # type: ignore[arg-type]
-                return path[::-1]
-            queue.append(dep)
-    return []
+            if ctx.packages.workspace_package(dep) is not None:
+                queue.append(dep)
+    memo[start] = came
+    return came
+
+
+def _dependency_path(ctx: CheckContext, start: str, target: str) -> list[str]:
+    """The run dependencies leading from workspace package ``start`` to ``target`` (both
+    included; the shortest), or [] when there are none among the workspace packages."""
+    came = _run_closure(ctx, start)
+    if target not in came:
+        return []
+    path = [target]
+    while path[-1] != start:
+        path.append(came[path[-1]])
+    return path[::-1]
 
 
 def _share_path(ctx: CheckContext, arg: str) -> str | None:

@@ -130,19 +130,18 @@ def _stray_keys(path: str, model: Any, users: list[tuple[Any, Any]], keys: dict[
     from physai_lint.params.effective import matching_keys
     from physai_lint.params.match import explain_no_match
 
-    own = _own
     matched = {id(b) for n in readers
                for b in keys.get(id(n)) or matching_keys(n.fqn, model, n.kind == "composable_node")}
     # nodes that load the file and get no key of their own from it (wildcard keys aside)
     unserved: dict[str, tuple[Any, Any]] = {}
     for node, src in users:
-        if node.name and not any("*" not in own(b.key) for b in keys[id(node)]):
+        if node.name and not any("*" not in _own(b.key) for b in keys[id(node)]):
             unserved.setdefault(node.name, (node, src))
     if not unserved:
         return
     names = tuple(sorted(unserved))
     for block in model.blocks:
-        name = own(block.key)
+        name = _own(block.key)
         if id(block) in matched or "*" in name or not name:
             continue
         hit = name if name in unserved else next(iter(close_matches(name, names, 1, 0.8)), None)
@@ -183,6 +182,7 @@ def _frontend_rejects(ctx: CheckContext, prm: Any) -> bool:
     import yaml
 
     from physai_lint.checks._util import ir_objects
+    from physai_lint.frontends.attributes import get_attr_rejects
     from physai_lint.model.launch import ParamEntry
     from physai_lint.model.values import PSubst, literal_of
 
@@ -197,10 +197,7 @@ def _frontend_rejects(ctx: CheckContext, prm: Any) -> bool:
         items = yaml.safe_load(prm.raw)
     except (yaml.YAMLError, RecursionError, ValueError):
         return False
-    if not isinstance(items, list) or not items:
-        return False
-    first = next((type(x) for x in items if type(x) is not str), str)
-    return first not in (str, bool, int, float) or not all(isinstance(x, (first, str)) for x in items)
+    return isinstance(items, list) and bool(items) and get_attr_rejects([type(x) for x in items])
 
 
 @rule("P106", "mixed-type-array")

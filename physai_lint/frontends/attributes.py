@@ -249,6 +249,15 @@ def _yaml_types(el: Element, accepted: frozenset[str]) -> Iterator[Diagnostic]:
                 'make it a list: put "- " before its first key', key=f"{tag}:{child.tag}:map")
 
 
+def get_attr_rejects(kinds: list[type]) -> bool:
+    """Whether a frontend's ``Entity.get_attr`` rejects a list with items of these Python types
+    (launch ``is_instance_of_valid_type`` with strings allowed): it wants scalars whose non-string
+    items are all of the first non-string one's type."""
+    first = next((k for k in kinds if k is not str), str)
+    return first not in (str, bool, int, float) or \
+        any(k is not str and not issubclass(k, first) for k in kinds)
+
+
 def _yaml_param_list(el: Element, attr: Attr) -> Iterator[Diagnostic]:
     """A YAML list parameter value launch rejects (P106): ``get_attr`` (``is_instance_of_valid_type``
     with strings allowed) wants scalars whose non-string items share the first one's type, and
@@ -259,10 +268,7 @@ def _yaml_param_list(el: Element, attr: Attr) -> Iterator[Diagnostic]:
     name = el.attrs["name"].text if "name" in el.attrs else "?"
     shown = "[" + ", ".join(i.text if i.is_str or not i.items else "[...]"
                             for i in attr.items) + "]"
-    first = next((k for k in kinds if k is not str), str)
-    bad = [k for k in kinds if k is not str and (k not in (bool, int, float) or
-                                                  not issubclass(k, first))]
-    if first not in (str, bool, int, float) or bad:
+    if get_attr_rejects(kinds):
         why = ("TypeError \"Attribute 'value' of Entity 'param' expected to be of type 'None', "
                "got '<class 'list'>'\"")
     elif len({k for k in kinds if k is not str} |

@@ -234,8 +234,6 @@ def _read_include(path: str, include: str, read: Reader) -> tuple[str, str] | No
     return None
 
 
-
-
 # ---- base classes from other workspace packages -------------------------------------------------
 
 # ``class Worker : public base_pkg::BaseClient {``: a class head with its bases
@@ -250,17 +248,15 @@ def foreign_bases(own: list[tuple[str, str]], read: Reader | None, locate: Locat
                   package: str = "") -> list[tuple[CppFacts, Callable[[str | None], bool | str]]]:
     """What base classes defined in another workspace package declare for the classes of
     ``own`` (the sources of an executable of ``package``, with the headers of ``package`` they
-    include): a node class
-    deriving from ``base_pkg::BaseClient`` runs its base's constructor, and the publishers it
-    makes there (PlanSys2's performers derive their action clients and status topics so).
+    include): a node class deriving from ``base_pkg::BaseClient`` runs its base's constructor,
+    and the publishers it makes there (PlanSys2's performers derive their status topics so).
 
     ``locate(include)``: for ``#include "base_pkg/base_client.hpp"`` of another workspace package,
     (the header's path, its text, a function giving that package's C++ sources that hold a word);
     None otherwise. The base's code is its header and the sources that define its members
     (``BaseClient::``); only the items of that class are taken, and not where it makes its node
-    (its subclass passes the name on). Its
-    endpoints are kept as their kind and type only (``unnamed``: the dangling-topic rules back off
-    for that type): a base class is often a toolbox its subclasses configure, whose members
+    (its subclass passes the name on). Its endpoints are kept as their kind and type only
+    (``unnamed``: the dangling-topic rules back off for that type): a base class is often a toolbox its subclasses configure, whose members
     subscribe only when a parameter asks for it (rtabmap_sync's ``CommonDataSubscriber`` has a
     setup function per combination of inputs). Its parameters and lifecycle base are kept."""
     texts = list(own)
@@ -307,7 +303,7 @@ def _defines_class(text: str, name: str) -> bool:
     if name not in text:
         return False
     head = re.compile(r"\b(?:class|struct)\s+(?:\w+\s+)*?" + re.escape(name) + r"\b[^;{]*\{")
-    return head.search(blank_comments(text)) is not None
+    return head.search(_code(text)) is not None
 
 
 @functools.lru_cache(maxsize=2048)
@@ -319,7 +315,7 @@ def _class_heads(text: str) -> tuple[frozenset[str], frozenset[str], tuple[str, 
     if ("public" not in text and "protected" not in text and "private" not in text) or \
             _CLASS_BASES.search(text) is None:
         return frozenset(), frozenset(), ()
-    code = blank_comments(text)
+    code = _code(text)
     defined, bases = set(), set()
     for m in _CLASS_BASES.finditer(code):
         defined.add(m.group(1))
@@ -348,8 +344,8 @@ def _split_bases(clause: str) -> list[str]:
     return out
 
 
-def blank_comments(text: str) -> str:
-    """``text`` with its comments blanked (a class head in a comment names no base)."""
-    if "/" not in text:
-        return text
-    return re.sub(r"//[^\n]*|/\*[\s\S]*?\*/", " ", text)
+def _code(text: str) -> str:
+    """``text`` with its comments, strings and preprocessor lines blanked, as extraction skims it
+    (a class head in a comment names no base); the text itself when the skim has doubts."""
+    view = skim(text)
+    return text if view is None else blank_code(text, 0, len(text), view.starts, view.ends)

@@ -352,7 +352,8 @@ class InterfaceStore:
             return None
         # a base class of another package needs that package to build: a <depend> on it, or a
         # find_package() of it (ament_cmake_auto finds the manifest's <depend>s)
-        others = {n for n in (*mine.exec_depends, *mine.found_packages) if n != package and workspace(n)}
+        others = {n: pkg for n in (*mine.exec_depends, *mine.found_packages)
+                  if n != package and (pkg := workspace(n)) is not None}
         if not others:
             return None
 
@@ -363,10 +364,7 @@ class InterfaceStore:
             return self._foreign[key]
 
         def find(include: str) -> tuple[str, str, Any] | None:
-            name = include.split("/", 1)[0]
-            if name not in others or "/" not in include:
-                return None
-            pkg = workspace(name)
+            pkg = others.get(include.split("/", 1)[0]) if "/" in include else None
             if pkg is None:
                 return None
             path = f"{pkg.path}/include/{include}"

@@ -5,7 +5,7 @@ set and never restored."""
 from __future__ import annotations
 
 import posixpath
-from collections.abc import Iterator
+from collections.abc import Collection, Iterator
 from dataclasses import replace
 from typing import TYPE_CHECKING
 
@@ -32,6 +32,14 @@ def declared_arguments(actions: tuple[ir.Action, ...], conditional: bool = False
             yield from declared_arguments(a.actions, cond)
         elif isinstance(a, ir.OpaqueAction):
             yield from declared_arguments(a.actions, True)
+
+
+def required_missing(actions: tuple[ir.Action, ...], passed: Collection[str]) -> Iterator[ir.DeclareArgument]:
+    """The unconditional declarations without a default whose names ``passed`` lacks: what
+    ``IncludeLaunchDescription.execute`` raises on ("missing required argument")."""
+    for d, conditional in declared_arguments(actions):
+        if not conditional and d.default is None and d.name not in passed:
+            yield d
 
 
 def include(inst: Instantiator, a: ir.Include, scope: Scope) -> None:
@@ -78,9 +86,7 @@ def include(inst: Instantiator, a: ir.Include, scope: Scope) -> None:
     # Arguments that cannot be known (launch_arguments computed from a file, or forwarded from
     # context.launch_configurations) may pass any name: no required one is known to be missing.
     rec.required_missing = () if a.arguments is None else tuple(sorted({
-        d.name for d, conditional in declared_arguments(lf.actions)
-        if not conditional and d.default is None and d.name not in passed
-    }))
+        d.name for d in required_missing(lf.actions, passed)}))
     if source not in inst.result.files:
         inst.result.files.append(source)
     n_decl, n_reads, n_opaque, n_inc = (len(inst.result.declared_args), len(inst.result.config_reads),

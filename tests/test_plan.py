@@ -137,3 +137,33 @@ def test_parts_that_cannot_be_known_are_listed_not_silently_left_out(tmp_path, d
     assert "Not shown: 2 part(s) of the launch cannot be known statically and may start more:" in text
     data = json.loads(plan(opts, "src/demo/launch/a.launch.py", "json", cwd=str(tmp_path)))
     assert [(u["line"], u["reason"].split(" ")[0]) for u in data["unknown"]] == [(11, "call"), (12, "include")]
+
+
+def test_components_loaded_by_a_timer_or_a_handler_wait_for_it(tmp_path, demo_package) -> None:
+    """A LoadComposableNodes inside a TimerAction loads its components when the timer fires, one
+    inside an event handler when the event comes: the components wait for those as a Node does."""
+    launch = (
+        "from launch import LaunchDescription\n"
+        "from launch.actions import RegisterEventHandler, TimerAction\n"
+        "from launch.event_handlers import OnProcessStart\n"
+        "from launch_ros.actions import LoadComposableNodes, Node\n"
+        "from launch_ros.descriptions import ComposableNode\n\n\n"
+        "def generate_launch_description():\n"
+        "    driver = Node(package='demo_nodes_cpp', executable='talker', name='driver')\n"
+        "    def load(name):\n"
+        "        return LoadComposableNodes(target_container='shared', composable_node_descriptions=[\n"
+        "            ComposableNode(package='composition', plugin='composition::Listener', name=name)])\n"
+        "    return LaunchDescription([\n"
+        "        Node(package='rclcpp_components', executable='component_container', name='shared'),\n"
+        "        driver,\n"
+        "        TimerAction(period=3.0, actions=[load('late')]),\n"
+        "        RegisterEventHandler(OnProcessStart(target_action=driver, on_start=[load('after_driver')])),\n"
+        "    ])\n")
+    demo_package({"launch/a.launch.py": launch})
+    p, _ = _plan(tmp_path, "src/demo/launch/a.launch.py")
+    vertex = {label: v for v, label in p.labels.items()}
+    assert p.vertices[vertex["/late"]].delay == 3.0
+    assert p.critical_delay == 3.0
+    before = {(p.labels[e.before], e.reason) for e in p.edges if p.labels[e.after] == "/after_driver"}
+    assert ("/shared", "container") in before
+    assert any(who == "/driver" and "start" in reason.lower() for who, reason in before), before

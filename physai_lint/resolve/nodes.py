@@ -153,10 +153,14 @@ class NodeBuilder:
             out.append(EffRemap(src, dst, r.span, "node", prefix))
         return out
 
-    def _register(self, inst_: NodeInstance, key: str) -> None:
+    def _register(self, inst_: NodeInstance, key: str | None) -> None:
+        """Add a node with the timer and event handler it starts under; ``key``: the action an
+        event handler's target_action names it by (None for a composable node: a handler naming
+        its container or its LoadComposableNodes does not watch the component)."""
         fr = self.inst.frame
         self.inst.result.nodes.append(inst_)
-        self.by_action.setdefault(key, []).append(inst_.id)
+        if key is not None:
+            self.by_action.setdefault(key, []).append(inst_.id)
         if fr.deferred == "timer" or fr.delay not in (0.0,):
             self.inst.result.delays[inst_.id] = fr.delay
         for tkey, reason, span in fr.trigger:
@@ -246,7 +250,8 @@ class NodeBuilder:
             name_explicit=name_given, namespace_explicit=specified, container=container,
             container_id=container_id, package_from_config=package_from_config,
         )
-        self.inst.result.nodes.append(inst_)
+        # loaded when the action loading it runs: after the timer or the event that runs that
+        self._register(inst_, None)
         if container_id is not None:
             self.inst.add_edge(container_id, node_id, "container", cn.span, None)
 

@@ -116,6 +116,18 @@ def substitution_tested(ctx: CheckContext) -> Iterator[Diagnostic]:
                 key=f"{fact.how}:{fact.detail}")
 
 
+@rule("L012", "call-argument-mismatch")
+def call_argument_mismatch(ctx: CheckContext) -> Iterator[Diagnostic]:
+    for _path, facts in python_facts(ctx):
+        for fact in facts.call_errors:
+            yield Diagnostic(
+                "L012", fact.span,
+                f"this call raises TypeError when it runs: {fact.detail}",
+                help="pass the arguments the function's signature asks for, or give the parameter a "
+                     "default value",
+                key=fact.detail)
+
+
 @rule("L008", "wrong-argument-type")
 def wrong_argument_type(ctx: CheckContext) -> Iterator[Diagnostic]:
     for _path, facts in python_facts(ctx):

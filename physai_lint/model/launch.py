@@ -351,7 +351,7 @@ class ConcatFact:
     ``os.path.join(FindPackageShare('p'), 'x')``, f-string of a substitution (``how``)."""
 
     how: Literal["plus", "os.path.join", "f-string", "format", "percent", "str", "join",
-                 "truth", "equals", "not-equals"]
+                 "truth", "equals", "not-equals", "call"]
     span: Span
     detail: str
 
@@ -378,6 +378,9 @@ class PythonFacts:
     # A substitution tested as a Python value while the description is built: ``if lc:`` (always
     # true), ``lc == 'true'`` (always false). ``how`` is "truth", "equals" or "not-equals".
     tested: tuple[ConcatFact, ...] = ()
+    # A call of a function the file defines with arguments its signature refuses (how "call";
+    # detail: Python's TypeError message).
+    call_errors: tuple[ConcatFact, ...] = ()
 
 
 @dataclass(frozen=True, slots=True)

@@ -118,7 +118,9 @@ def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | N
                   for n in tree.body)
     wrong = tuple(sorted(ev.wrong_types.values(), key=lambda f: (f.span.line, f.span.col, f.call)))
     tested = tuple(sorted(ev.tests.values(), key=lambda c: (c.span.line, c.span.col, c.how)))
-    facts = PythonFacts(calls, names, concats, has_gld, is_test, wrong, tuple(sorted(ev.escaped)), tested)
+    refused = tuple(sorted(ev.call_errors.values(), key=lambda c: (c.span.line, c.span.col)))
+    facts = PythonFacts(calls, names, concats, has_gld, is_test, wrong, tuple(sorted(ev.escaped)), tested,
+                        refused)
     launch = LaunchFile(path, "python", actions, python=facts, read_files=tuple(ev.read_files))
     convert_values.set_recorder(None)
     return FrontendResult(launch=launch, diagnostics=[])

@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING, Any
 
 import yaml
 
-from physai_lint.model.launch import EVERY_CONFIGURATION
+from physai_lint.model.launch import EVERY_CONFIGURATION, ConcatFact
 from physai_lint.model.span import Span
 from physai_lint.model.values import FindPackage, LaunchConfig, StrMethod, Text
 
@@ -165,7 +165,7 @@ def call(ev: Evaluator, func: Any, args: list[Any], kwargs: dict[str, Any], node
          scope: Scope, arg_spans: list[Span], kw_spans: dict[str, Span]) -> Any:
     span = ev.span(node, scope)
     if isinstance(func, UserFunc):
-        return call_user(ev, func, args, kwargs, span)
+        return call_user(ev, func, args, kwargs, span, written=True)
     if isinstance(func, Ref):
         qual = api.canonical(func.qual)
         if qual is not None and qual not in api.FUNCTIONS:
@@ -174,9 +174,9 @@ def call(ev: Evaluator, func: Any, args: list[Any], kwargs: dict[str, Any], node
     if isinstance(func, BoundMethod):
         return call_method(ev, func.obj, func.name, args, kwargs, span)
     if isinstance(func, BoundUser):
-        return call_user(ev, func.func, [func.obj, *args], kwargs, span)
+        return call_user(ev, func.func, [func.obj, *args], kwargs, span, written=True)
     if isinstance(func, ClassValue):
-        return classes.instantiate(ev, func, args, kwargs, span)
+        return classes.instantiate(ev, func, args, kwargs, span, written=True)
     if isinstance(func, Decorator) and func.kind == "cache" and len(args) == 1 and isinstance(args[0], UserFunc):
         return classes.cached(args[0], func.maxsize)
     ev.escape([*args, *kwargs.values()])
@@ -185,9 +185,18 @@ def call(ev: Evaluator, func: Any, args: list[Any], kwargs: dict[str, Any], node
     return Opaque("call of a value that cannot be evaluated statically", span)
 
 
-def call_user(ev: Evaluator, f: UserFunc, args: list[Any], kwargs: dict[str, Any], span: Span) -> Any:
+def call_user(ev: Evaluator, f: UserFunc, args: list[Any], kwargs: dict[str, Any], span: Span,
+              written: bool = False) -> Any:
+    """Run user function ``f``; ``written``: a call the file writes, whose arguments are all known
+    (no unknown ``*args``/``**kwargs``), so one its signature refuses is noted (TypeError)."""
     from .evaluator import MAX_DEPTH, Abort, Scope
 
+    if written and span not in ev.call_errors:
+        refused = refused_arguments(f.node, len(f.defaults), set(f.kw_defaults), len(args), list(kwargs))
+        if refused is not None:
+            ev.call_errors[span] = ConcatFact("call", span, refused)  # type: ignore[arg-type]
+    if written and span in ev.call_errors:  # Python raises here: nothing the body builds exists
+        return Opaque(f"raises TypeError: {ev.call_errors[span].detail}", span)
     if ev.depth >= MAX_DEPTH:
         return Opaque("call depth limit reached (recursive helper?)", span)
     if any(isinstance(v, Opaque) for v in [*args, *kwargs.values()]) and \
@@ -230,6 +239,45 @@ def call_user(ev: Evaluator, f: UserFunc, args: list[Any], kwargs: dict[str, Any
     finally:
         ev.frames.pop()
         ev.depth -= 1
+
+
+def refused_arguments(node: ast.FunctionDef | ast.AsyncFunctionDef | ast.Lambda, defaults: int,
+                      kw_defaults: set[str], given: int, keywords: list[str]) -> str | None:
+    """The TypeError Python raises when a function of signature ``node`` (its last ``defaults``
+    positional parameters and the keyword-only ones in ``kw_defaults`` have defaults) is called
+    with ``given`` positional arguments and the keyword arguments ``keywords``, in the order
+    CPython checks them (``initialize_locals``: keywords, then the positional count, then
+    what is missing); None when it accepts them."""
+    a = node.args
+    name = f"{getattr(node, 'name', '<lambda>')}()"
+    positional = [p.arg for p in a.posonlyargs + a.args]
+    posonly = {p.arg for p in a.posonlyargs}
+    named = set(positional) | {k.arg for k in a.kwonlyargs}
+    for k in keywords:
+        if k in posonly and a.kwarg is None:
+            return f"{name} got some positional-only arguments passed as keyword arguments: '{k}'"
+        if k not in named and a.kwarg is None:
+            return f"{name} got an unexpected keyword argument '{k}'"
+        if k in positional and k not in posonly and positional.index(k) < given:
+            return f"{name} got multiple values for argument '{k}'"
+    if given > len(positional) and a.vararg is None:
+        takes = len(positional)
+        least = takes - defaults
+        counted = f"from {least} to {takes}" if defaults else str(takes)
+        return (f"{name} takes {counted} positional argument{'s' if takes != 1 or defaults else ''} "
+                f"but {given} {'was' if given == 1 else 'were'} given")
+    filled = set(positional[:given]) | (set(keywords) - posonly)  # f(a, /, **kw): f(a=1) fills kw
+    missing = [p for p in positional[:len(positional) - defaults] if p not in filled]
+    kind = "positional"
+    if not missing:
+        missing = [k.arg for k in a.kwonlyargs if k.arg not in kw_defaults and k.arg not in filled]
+        kind = "keyword-only"
+    if not missing:
+        return None
+    listed = [f"'{m}'" for m in missing]
+    shown = listed[0] if len(listed) == 1 else ", ".join(listed[:-1]) + ("," if len(listed) > 2 else "") + \
+        f" and {listed[-1]}"
+    return f"{name} missing {len(missing)} required {kind} argument{'s' if len(missing) > 1 else ''}: {shown}"
 
 
 def _call_cached(ev: Evaluator, f: UserFunc, args: list[Any], kwargs: dict[str, Any], span: Span) -> Any:

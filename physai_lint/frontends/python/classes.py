@@ -127,13 +127,19 @@ def define_class(ev: Evaluator, s: ast.ClassDef, scope: Scope) -> Any:
         return refuse("it has a metaclass or class keywords")
     bases = [ev.ev(b, scope) for b in s.bases]
     base: ClassValue | None = None
+    unknown_base: str | None = None
     for b in bases:
         if isinstance(b, Ref) and b.qual == "builtins.object":
             continue
         if isinstance(b, ClassValue) and base is None and len(bases) == 1:
             base = b
             continue
-        return refuse("it derives from a class that is not a simple class of this file")
+        if isinstance(b, ClassValue):
+            return refuse("it derives from a class that is not a simple class of this file")
+        # A base imported from elsewhere (IsaacROSLaunchFragment): Python finds what the class body
+        # defines before looking in any base, so that much is known; the rest is not.
+        unknown_base = (f'it derives from a class that cannot be evaluated statically '
+                        f'("{ast.unparse(s.bases[bases.index(b)])}")')
     decorators = [ev.ev(d, scope) for d in s.decorator_list]
     data: Decorator | None = None
     for d in decorators:
@@ -142,10 +148,12 @@ def define_class(ev: Evaluator, s: ast.ClassDef, scope: Scope) -> Any:
         if not (isinstance(d, Decorator) and d.kind == "dataclass") or data is not None:
             return refuse("it has a decorator other than @dataclass")
         data = d
+    if unknown_base is not None and data is not None:
+        return refuse(unknown_base)  # a dataclass's fields and __init__ come from its bases too
     cscope = ClassScope(scope)
     ev.exec_block(s.body, cscope)
     attrs = cscope.vars
-    cls = ClassValue(s.name, attrs, base)
+    cls = ClassValue(s.name, attrs, base, unknown_base=unknown_base)
     for v in attrs.values():
         func = v.func if isinstance(v, MethodKind) else v
         if isinstance(func, UserFunc) and func.owner is None:
@@ -199,14 +207,20 @@ def lookup(cls: ClassValue, name: str) -> Any:
     return None
 
 
-def instantiate(ev: Evaluator, cls: ClassValue, args: list[Any], kwargs: dict[str, Any], span: Span) -> Any:
+def instantiate(ev: Evaluator, cls: ClassValue, args: list[Any], kwargs: dict[str, Any], span: Span,
+                written: bool = False) -> Any:
+    """``cls(*args, **kwargs)``; ``written``: a call the file writes (``call_user``)."""
     from .calls import call_user
 
+    hidden = next((c.unknown_base for c in chain(cls) if c.unknown_base), None)
+    if hidden is not None:  # its base's __init__ (or __new__) may run: what it builds is unknown
+        ev.escape([*args, *kwargs.values()])  # and it may read the configurations it is given
+        return Opaque(f'class "{cls.name}" cannot be evaluated statically: {hidden}', span)
     inst = Instance(cls)
     init = lookup(cls, "__init__")
     try:
         if isinstance(init, UserFunc):
-            r = call_user(ev, init, [inst, *args], dict(kwargs), span)
+            r = call_user(ev, init, [inst, *args], dict(kwargs), span, written)
             if r is not None:
                 return Opaque(r.reason if isinstance(r, Opaque) else f"{cls.name}.__init__ returns a value", span)
         elif init is not None:
@@ -279,6 +293,9 @@ def get_attr(ev: Evaluator, obj: ClassValue | Instance | SuperProxy, attr: str, 
         cls = obj.cls if isinstance(obj, Instance) else obj
     v = lookup(cls, attr)
     if v is None and not any(attr in c.attrs for c in chain(cls)):
+        hidden = next((c.unknown_base for c in chain(cls) if c.unknown_base), None)
+        if hidden is not None:
+            return Opaque(f'"{attr}" of class "{cls.name}" may come from its base: {hidden}', span)
         return Opaque(f'"{cls.name}" has no attribute "{attr}" known statically', span)
     if isinstance(v, MethodKind):
         if v.kind == "static":

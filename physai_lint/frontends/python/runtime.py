@@ -186,6 +186,9 @@ class ClassValue:
     fields: tuple[str, ...] | None = None  # dataclass fields in order; None for a plain class
     frozen: bool = False
     defaults: dict[str, FieldSpec] = field(default_factory=dict)  # dataclass field defaults
+    # Why its base class cannot be followed (imported from another package): then only what its
+    # own body defines is known, and it is never instantiated (``classes.instantiate``).
+    unknown_base: str | None = None
 
 
 @dataclass(eq=False)

@@ -33,6 +33,8 @@ class Recorder:
         # an unknown function): that code may read them.
         self.escaped: set[str] = set()
         self.tests: dict[tuple[str, Span], ConcatFact] = {}
+        # Calls of the file's own functions with arguments their signature refuses (TypeError).
+        self.call_errors: dict[Span, ConcatFact] = {}
 
     def escape(self, values: Any, depth: int = 0) -> None:
         """Note the launch configurations (by literal name) in ``values``: arguments of a call the

@@ -167,3 +167,23 @@ def test_components_loaded_by_a_timer_or_a_handler_wait_for_it(tmp_path, demo_pa
     before = {(p.labels[e.before], e.reason) for e in p.edges if p.labels[e.after] == "/after_driver"}
     assert ("/shared", "container") in before
     assert any(who == "/driver" and "start" in reason.lower() for who, reason in before), before
+
+
+def test_components_of_a_timed_container_wait_for_its_timer_once(tmp_path, demo_package) -> None:
+    """A container started by a TimerAction loads its own components when it starts: their wait is
+    the container's, not a second timer on top of it."""
+    launch = (
+        "from launch import LaunchDescription\n"
+        "from launch.actions import TimerAction\n"
+        "from launch_ros.actions import ComposableNodeContainer\n"
+        "from launch_ros.descriptions import ComposableNode\n\n\n"
+        "def generate_launch_description():\n"
+        "    return LaunchDescription([TimerAction(period=10.0, actions=[\n"
+        "        ComposableNodeContainer(package='rclcpp_components', executable='component_container',\n"
+        "                                name='container', namespace='', composable_node_descriptions=[\n"
+        "            ComposableNode(package='composition', plugin='composition::Talker', name='talker')]),\n"
+        "    ])])\n")
+    demo_package({"launch/a.launch.py": launch})
+    p, _ = _plan(tmp_path, "src/demo/launch/a.launch.py")
+    assert [p.labels[v] for v in p.critical_path] == ["/container", "/talker"]
+    assert p.critical_delay == 10.0

@@ -153,18 +153,26 @@ class NodeBuilder:
             out.append(EffRemap(src, dst, r.span, "node", prefix))
         return out
 
-    def _register(self, inst_: NodeInstance, key: str | None) -> None:
+    def _register(self, inst_: NodeInstance, key: str | None, after: str | None = None) -> None:
         """Add a node with the timer and event handler it starts under; ``key``: the action an
         event handler's target_action names it by (None for a composable node: a handler naming
-        its container or its LoadComposableNodes does not watch the component)."""
+        its container or its LoadComposableNodes does not watch the component). ``after``: the
+        container a component is loaded into, which already waits for what the component shares
+        with it (plan delays add up along the container edge)."""
         fr = self.inst.frame
-        self.inst.result.nodes.append(inst_)
+        res = self.inst.result
+        res.nodes.append(inst_)
         if key is not None:
             self.by_action.setdefault(key, []).append(inst_.id)
+        delay = fr.delay
+        if after is not None and delay is not None:
+            before = res.delays.get(after, 0.0)
+            delay = None if before is None else max(0.0, delay - before)
         if fr.deferred == "timer" or fr.delay not in (0.0,):
-            self.inst.result.delays[inst_.id] = fr.delay
+            res.delays[inst_.id] = delay
         for tkey, reason, span in fr.trigger:
-            self.pending.append((tkey, inst_.id, reason, span, fr.delay))
+            if not any(p[0] == tkey and p[1] == after for p in self.pending):
+                self.pending.append((tkey, inst_.id, reason, span, fr.delay))
 
     # ---- actions ------------------------------------------------------------------------------
     def node(self, a: ir.NodeAction, scope: Scope) -> None:
@@ -251,7 +259,7 @@ class NodeBuilder:
             container_id=container_id, package_from_config=package_from_config,
         )
         # loaded when the action loading it runs: after the timer or the event that runs that
-        self._register(inst_, None)
+        self._register(inst_, None, container_id)
         if container_id is not None:
             self.inst.add_edge(container_id, node_id, "container", cn.span, None)
 

@@ -69,13 +69,38 @@ METAPACKAGES: dict[str, frozenset[str]] = {
     "vision_opencv": frozenset({"cv_bridge", "image_geometry"}),
     "image_common": frozenset({"camera_calibration_parsers", "camera_info_manager", "image_transport"}),
     "perception_pcl": frozenset({"pcl_conversions", "pcl_ros"}),
+    "ros_gz": frozenset({"ros_gz_bridge", "ros_gz_image", "ros_gz_sim", "ros_gz_sim_demos"}),
+    "ros_ign": frozenset({"ros_gz", "ros_ign_bridge", "ros_ign_gazebo", "ros_ign_gazebo_demos",
+                          "ros_ign_image"}),  # humble only: its members forward to ros_gz
+    "navigation2": frozenset({
+        "nav2_amcl", "nav2_behavior_tree", "nav2_behaviors", "nav2_bt_navigator", "nav2_collision_monitor",
+        "nav2_constrained_smoother", "nav2_controller", "nav2_core", "nav2_costmap_2d", "nav2_dwb_controller",
+        "nav2_lifecycle_manager", "nav2_map_server", "nav2_mppi_controller", "nav2_msgs",
+        "nav2_navfn_planner", "nav2_planner", "nav2_regulated_pure_pursuit_controller",
+        "nav2_rotation_shim_controller", "nav2_route", "nav2_rviz_plugins", "nav2_simple_commander",
+        "nav2_smac_planner", "nav2_smoother", "nav2_theta_star_planner", "nav2_util",
+        "nav2_velocity_smoother", "nav2_voxel_grid", "nav2_waypoint_follower"}),
+    "nav2_dwb_controller": frozenset({"costmap_queue", "dwb_core", "dwb_critics", "dwb_msgs", "dwb_plugins",
+                                     "nav_2d_msgs", "nav_2d_utils"}),
 }
+
+
+def _metapackage_members(name: str) -> set[str]:
+    """What metapackage ``name`` brings, through the metapackages among its members."""
+    out: set[str] = set()
+    todo = [name]
+    while todo:
+        for member in METAPACKAGES.get(todo.pop(), ()):
+            if member not in out:
+                out.add(member)
+                todo.append(member)
+    return out
 
 
 def _through(ctx: CheckContext, declared: dict[str, int], name: str) -> bool:
     """Whether a declared dependency brings ``name`` at run time: a metapackage holding it
     (``METAPACKAGES``), or a workspace package whose run dependencies reach it."""
-    if any(name in METAPACKAGES.get(dep, ()) for dep in declared):
+    if any(dep in METAPACKAGES and name in _metapackage_members(dep) for dep in declared):
         return True
     return any(name in _run_closure(ctx, dep) for dep in declared)
 

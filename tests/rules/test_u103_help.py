@@ -71,3 +71,20 @@ def test_a_dependency_brought_by_a_declared_metapackage_or_workspace_package_is_
                         "launch/a.launch.xml": xml})
     opts = CheckOptions(paths=[str(pkg / "launch/a.launch.xml")], workspace=str(tmp_path), cache=False)
     assert [f.message for f in run_check(opts).findings if f.code == "U103"] == []
+
+
+def test_members_of_nested_metapackages_are_declared(tmp_path, demo_package):
+    # ros_gz brings ros_gz_sim; navigation2 brings nav2_map_server, and nav2_dwb_controller,
+    # itself a metapackage, brings dwb_core; ros_ign (humble) brings ros_gz and so ros_gz_bridge
+    xml = """<launch>
+  <node pkg="ros_gz_sim" exec="create" args="-topic robot_description"/>
+  <node pkg="nav2_map_server" exec="map_server" name="map_server"/>
+  <node pkg="dwb_core" exec="tool" name="dwb"/>
+  <node pkg="ros_gz_bridge" exec="parameter_bridge" name="bridge"/>
+</launch>
+"""
+    depends = "<depend>ros_gz</depend><exec_depend>navigation2</exec_depend><exec_depend>ros_ign</exec_depend>"
+    pkg = demo_package({"package.xml": PACKAGE_XML.format(name="demo", depends=depends),
+                        "launch/a.launch.xml": xml})
+    opts = CheckOptions(paths=[str(pkg / "launch/a.launch.xml")], workspace=str(tmp_path), cache=False)
+    assert [f.message for f in run_check(opts).findings if f.code == "U103"] == []

@@ -163,6 +163,22 @@ _TIME_AGNOSTIC = frozenset({("tf2_ros", "static_transform_publisher"),
                             ("ros_gz_image", "image_bridge"), ("ros_ign_image", "image_bridge"),
                             ("ros_gz_sim", "create"), ("ros_ign_gazebo", "create"),
                             ("gazebo_ros", "spawn_entity.py")})
+# Teleoperation nodes that publish an unstamped Twist unless the parameter named here is true
+# (teleop_twist_keyboard.py `stamped`, teleop_twist_joy.cpp `publish_stamped_twist`): their
+# output carries no time, so wall time is harmless unless they are told to stamp it.
+_UNSTAMPED_UNLESS = {("teleop_twist_keyboard", "teleop_twist_keyboard"): "stamped",
+                     ("teleop_twist_joy", "teleop_node"): "publish_stamped_twist"}
+
+
+def _time_agnostic(node: Any, params: dict[str, Any]) -> bool:
+    key = (node.package, node.executable)
+    if key in _TIME_AGNOSTIC:
+        return True
+    flag = _UNSTAMPED_UNLESS.get(key)
+    if flag is None:
+        return False
+    ep = params.get(flag)
+    return ep is None or ep.value is False
 
 
 def _publishes_clock(ctx: CheckContext, node: Any) -> bool:
@@ -190,7 +206,7 @@ def use_sim_time(ctx: CheckContext) -> Iterator[Diagnostic]:
             if ep is not None and isinstance(ep.value, bool) and ep.origin is not None:
                 values[ep.value].append((node, ep))
             elif ep is None and node.kind != "container" and fully_known(ctx, node, params) and \
-                    (node.package, node.executable) not in _TIME_AGNOSTIC:
+                    not _time_agnostic(node, params):
                 unset.append(node)
         if values[True] and values[False]:
             minority = min(values[True], values[False], key=len)

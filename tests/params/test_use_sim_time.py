@@ -23,3 +23,13 @@ def test_an_unset_node_on_wall_clock_time_is_reported(demo_findings):
 def test_the_gazebo_bridges_copy_their_stamps(demo_findings):
     assert _p111(demo_findings, "ros_gz_bridge", "parameter_bridge") == []
     assert _p111(demo_findings, "ros_gz_image", "image_bridge") == []
+
+
+def test_teleop_nodes_publish_unstamped_twists_unless_told_to_stamp(demo_findings):
+    assert _p111(demo_findings, "teleop_twist_keyboard", "teleop_twist_keyboard") == []
+    assert _p111(demo_findings, "teleop_twist_joy", "teleop_node") == []
+    stamped = LAUNCH.replace("PKG", "teleop_twist_keyboard").replace("EXE", "teleop_twist_keyboard") \
+        .replace('args="/clock@rosgraph_msgs/msg/Clock[gz.msgs.Clock"/>',
+                 '><param name="stamped" value="true"/></node>')
+    (msg,) = [m for _, m in demo_findings({"launch/a.launch.xml": stamped}, "launch/a.launch.xml", "P111")]
+    assert "never gets use_sim_time" in msg

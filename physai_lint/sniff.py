@@ -28,6 +28,27 @@ Kind = Literal["launch", "params"]
 # parsers claim ("launch.py", "launch.xml", "launch.yaml", "launch.yml", "xml", "yaml", ...).
 LAUNCH_SUFFIXES = ("launch.py", "launch.xml", "launch.yaml", "launch.yml")
 YAML_SUFFIXES = (".yaml", ".yml")
+
+# A ``ros__parameters`` mapping key (rcl's parser takes any key starting with it: parse.c ::
+# PARAMS_KEY, compared with strncmp), in block style at the start of a line or in flow style after
+# ``{`` or ``,``; not the word in a comment (``# In ComposableNode ros__parameters are not
+# supported``) or in a value.
+_PARAMS_KEY = r"""['"]?ros__parameters[^\s:'"]*['"]?[ \t]*:(?:[ \t\r]|$)"""
+_PARAMS_BLOCK = re.compile(r"(?m)^[ \t]*(?:-[ \t]+)*(?:\?[ \t]+)?" + _PARAMS_KEY)
+_PARAMS_FLOW = re.compile(r"(?m)^([^#\n]*)[{,][ \t]*" + _PARAMS_KEY)
+_PARAMS_BLOCK_B = re.compile(_PARAMS_BLOCK.pattern.encode())
+_PARAMS_FLOW_B = re.compile(_PARAMS_FLOW.pattern.encode())
+
+
+def has_params_key(data: str | bytes) -> bool:
+    """Whether YAML text has a ``ros__parameters`` key: what makes a YAML file a parameter file."""
+    if isinstance(data, bytes):
+        if b"ros__parameters" not in data:
+            return False
+        return bool(_PARAMS_BLOCK_B.search(data) or _PARAMS_FLOW_B.search(data))
+    if "ros__parameters" not in data:
+        return False
+    return bool(_PARAMS_BLOCK.search(data) or _PARAMS_FLOW.search(data))
 _BY_EXTENSION: dict[str, Format] = {".py": "python", ".xml": "xml", ".yaml": "yaml", ".yml": "yaml"}
 
 _MARKUP = re.compile(r"\ufeff?\s*<")
@@ -179,7 +200,7 @@ def classify(name: str, text: str | None, explicit: bool) -> Verdict:
     if name.lower().endswith(YAML_SUFFIXES):
         if (explicit and named) or format_by_text(text) == "yaml":
             return Verdict("launch")
-        if explicit or "ros__parameters" in text:
+        if explicit or has_params_key(text):
             return Verdict("params")
         return Verdict(None)
     fmt = launch_format(name, text)

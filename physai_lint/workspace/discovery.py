@@ -6,7 +6,7 @@ import os
 import stat
 from dataclasses import dataclass, field
 
-from physai_lint.sniff import LAUNCH_SUFFIXES, YAML_SUFFIXES
+from physai_lint.sniff import LAUNCH_SUFFIXES, YAML_SUFFIXES, has_params_key
 
 from ._glob import compile_glob
 
@@ -76,12 +76,13 @@ def _norm(path: str) -> str:
 
 
 def sniff_param_file(path: str) -> bool:
-    """Does a YAML file mention ``ros__parameters``? Files over 10 MB are not read."""
+    """Does a YAML file have a ``ros__parameters`` key (``sniff.has_params_key``)? Files over
+    10 MB are not read."""
     try:
         if os.path.getsize(path) > PARAM_SNIFF_LIMIT:
             return False
         with open(path, "rb") as fh:
-            return b"ros__parameters" in fh.read()
+            return has_params_key(fh.read())
     except OSError:
         return False
 

@@ -101,3 +101,25 @@ def test_classify(name, text, explicit, kind):
     assert verdict.kind == kind
     no_launch = explicit and kind is None and text != ROS1
     assert verdict.reason == (ROS1_REASON if text == ROS1 else NOT_LAUNCH_REASON if no_launch else "")
+
+
+@pytest.mark.parametrize("text, params", [
+    ("camera:\n  ros__parameters:\n    rate: 30\n", True),
+    ("/**:\n  ros__parameters: {rate: 30}\n", True),
+    ("camera: {ros__parameters: {rate: 30}}\n", True),
+    ('camera:\n  "ros__parameters":\n    rate: 30\n', True),
+    ("camera:\r\n  ros__parameters:\r\n    rate: 30\r\n", True),
+    ("camera:\n  ros__parameters_old: {}\n", True),  # rcl compares the key's prefix
+    # a flat file for a composable node, saying so in a comment (husarion_ugv lights)
+    ("# In ComposableNode ros__parameters are not supported\nrate: 30\n", False),
+    ("controllers:\n  #   ros__parameters:\n  arm: {}\n", False),  # a commented-out block
+    ("note: ros__parameters\n", False),
+    ('note: "ros__parameters: x"\n', False),
+])
+def test_a_yaml_file_is_a_parameter_file_by_its_ros_parameters_key(tmp_path, text, params):
+    from physai_lint.workspace.discovery import sniff_param_file
+
+    assert classify("config.yaml", text, False).kind == ("params" if params else None)
+    path = tmp_path / "config.yaml"
+    path.write_bytes(text.encode())
+    assert sniff_param_file(str(path)) is params

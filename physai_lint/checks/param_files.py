@@ -161,10 +161,28 @@ def _stray_keys(path: str, model: Any, users: list[tuple[Any, Any]], keys: dict[
 
 @rule("P104", "parameter-file-structure")
 def structure(ctx: CheckContext) -> Iterator[Diagnostic]:
+    components_only = _read_by_components_only(ctx)
     for path in sorted(ctx.param_files):
+        if path in components_only:
+            continue
         for d in ctx.param_files[path].diagnostics:
             if d.code == "P104" and not _templated(d):
                 yield d
+
+
+def _read_by_components_only(ctx: CheckContext) -> set[str]:
+    """Files with no ros__parameters key (``ParamFileModel.flat``) that only composable nodes load:
+    launch_ros reads them with PyYAML and gives the node every key (to_parameters_list), so what
+    rcl's parser would reject never reaches rcl."""
+    flat = {p for p, m in ctx.param_files.items() if m.flat is not None}
+    if not flat:
+        return set()
+    kinds: dict[str, set[bool]] = {}
+    for _, node in all_nodes(ctx):
+        for src in node.param_sources:
+            if isinstance(src, ResolvedParamFile) and src.source in flat:
+                kinds.setdefault(src.source, set()).add(node.kind == "composable_node")
+    return {p for p, k in kinds.items() if k == {True}}
 
 
 def _templated(d: Diagnostic) -> bool:

@@ -247,6 +247,11 @@ def _effective_composable(fqn: str | None, sources: list[ParamSourceR],
             if model is None:
                 uncertain = True
                 continue
+            if model.flat is not None:  # no ros__parameters key: every key is a parameter
+                for prm in model.flat.params:
+                    put(prm.name, prm.launch_value, _launch_kind(prm.launch_value), prm.value_span,
+                        model.path, None)
+                continue
             blocks = matching_keys(fqn, model, composable=True) if fqn is not None else [
                 b for b in model.blocks if b.key.lstrip("/") == "**" and not b.nested
                 and b.params_key_exact]

@@ -486,7 +486,54 @@ def load_param_file(path: str, text: str, distro: str = "humble") -> ParamFileMo
                         "remove the parameter or give the array at least one element",
                         key=entry.name))
     p.model.diagnostics.sort(key=lambda d: (d.span.line, d.span.col, d.code))
+    if not p.model.ok and not p.model.has_ros_parameters:
+        from physai_lint.sniff import has_params_key
+
+        if not has_params_key(text):
+            p.model.flat = _flat_block(path, text)
     return p.model
+
+
+def _flat_block(path: str, text: str) -> NodeBlock | None:
+    """The parameters launch_ros gives a composable node from a file with no ``ros__parameters``
+    key (``ParamFileModel.flat``): every scalar or list of scalars of the top mapping, under its
+    dotted name (``normalize_parameters.py :: normalize_parameter_dict``). None when the file is
+    not a mapping or cannot be read."""
+    try:
+        root = yaml.compose(text, Loader=_Loader)
+    except (yaml.YAMLError, ValueError, RecursionError, MemoryError):
+        return None
+    if not isinstance(root, yaml.MappingNode):
+        return None
+    params: list[FileParam] = []
+    budget = [MAX_EVENTS]
+
+    def walk(node: yaml.MappingNode, prefix: str) -> None:
+        for key, value in node.value:
+            budget[0] -= 1
+            if budget[0] < 0 or not isinstance(key, yaml.ScalarNode):
+                return
+            name = f"{prefix}{key.value}"
+            key_span = _span(path, key)
+            if isinstance(value, yaml.MappingNode):
+                walk(value, name + ".")
+            elif isinstance(value, yaml.ScalarNode):
+                quoted = value.style in ("'", '"')
+                kind, typed = rcl_type_scalar(value.value, quoted, value.tag)
+                params.append(FileParam(name, typed, kind, value.value, _span(path, value), key_span,
+                                        quoted, pyyaml_scalar(value.value, quoted, value.tag)))
+            elif isinstance(value, yaml.SequenceNode) and all(isinstance(x, yaml.ScalarNode) for x in value.value):
+                items = [(x.value, x.style in ("'", '"'), x.tag) for x in value.value]
+                kinds = {rcl_type_scalar(v, q, t)[0] for v, q, t in items}
+                kind = f"{kinds.pop()}_array" if len(kinds) == 1 else "not_set" if not items else "string_array"
+                params.append(FileParam(name, [rcl_type_scalar(v, q, t)[1] for v, q, t in items], kind,
+                                        text[value.start_mark.index:value.end_mark.index],
+                                        _span(path, value), key_span, False,
+                                        [pyyaml_scalar(v, q, t) for v, q, t in items]))
+
+    walk(root, "")
+    span = Span.point(path, 1)
+    return NodeBlock("", span, tuple(params), False, None, False)
 
 
 def _guard(p: _Parser, fn: Any, *args: Any) -> None:

@@ -80,6 +80,10 @@ class ParamFileModel:
     merged_keys: list[Diagnostic] = field(default_factory=list)
     # (ops, ops cut per node key): params.effective's memo, made again when ``ops`` is replaced
     op_segments: Any = field(default=None, repr=False, compare=False)
+    # A file with no ros__parameters key read the way launch_ros reads it for a composable node
+    # (to_parameters_list: with nothing to normalise, the whole mapping is the node's parameters,
+    # nested keys joined with "."); None for any other file.
+    flat: NodeBlock | None = None
 
     def params_named(self, name: str) -> list[tuple[NodeBlock, FileParam]]:
         return [(b, p) for b in self.blocks for p in b.params if p.name == name]

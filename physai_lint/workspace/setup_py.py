@@ -443,6 +443,20 @@ def read_setup_py(pkg_dir: str, pkg_name: str, files: frozenset[str], text: str 
     return info
 
 
+def setup_cfg_console_scripts(text: str) -> list[str] | None:
+    """The console script names of a setup.cfg's ``[options.entry_points] console_scripts``; None
+    when the text is not a readable setup.cfg."""
+    cp = configparser.RawConfigParser()
+    try:
+        cp.read_string(text)
+    except (configparser.Error, ValueError):
+        return None
+    if not cp.has_option("options.entry_points", "console_scripts"):
+        return []
+    return [exe for exe, _ in _console_scripts({"console_scripts": cp.get("options.entry_points",
+                                                                          "console_scripts")})]
+
+
 def _console_scripts(val: object) -> list[tuple[str, str]]:
     out: list[tuple[str, str]] = []
     if isinstance(val, dict):

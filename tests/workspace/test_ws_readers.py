@@ -268,3 +268,20 @@ else:
         assert info.complete, test
         got = sorted((r.dest, r.source[len(str(tmp_path)) + 1:]) for r in info.rules)
         assert got == [("share/pkg/launch", "launch/a.launch.py")], test
+
+
+def test_ament_python_install_package_installs_setup_cfg_scripts_to_its_destination(tmp_path):
+    # controller_manager: ament_python_install_package(... SCRIPTS_DESTINATION lib/${PROJECT_NAME})
+    # installs the console scripts of the package's setup.cfg (setup.py install_scripts) there
+    (tmp_path / "setup.cfg").write_text(
+        "[options.entry_points]\nconsole_scripts =\n    spawner = pkg.spawner:main\n"
+        "    unspawner = pkg.unspawner:main\n")
+    info = _cmake(tmp_path, "project(pkg)\n"
+                            "ament_python_install_package(${PROJECT_NAME} SCRIPTS_DESTINATION lib/${PROJECT_NAME})\n"
+                            "ament_package()\n")
+    assert {"spawner", "unspawner"} <= info.executables and info.executables_complete
+    info = _cmake(tmp_path, "project(pkg)\nament_python_install_package(${PROJECT_NAME} "
+                            "SCRIPTS_DESTINATION bin)\nament_package()\n")
+    assert "spawner" not in info.executables  # not where ros2 run looks
+    info = _cmake(tmp_path, "project(pkg)\nament_python_install_package(${PROJECT_NAME})\nament_package()\n")
+    assert "spawner" not in info.executables  # without a destination no script is installed

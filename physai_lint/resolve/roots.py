@@ -135,6 +135,18 @@ def nodes_on_cycles(graph: dict[str, set[str]]) -> set[str]:
     return out
 
 
+def _reach(graph: dict[str, set[str]], start: str, limit: int = 200) -> int:
+    """How many includers ``start`` may include, directly or not (by the guess ``graph``)."""
+    seen = {start}
+    todo = [start]
+    while todo and len(seen) < limit:
+        for q in graph.get(todo.pop(), ()):
+            if q not in seen:
+                seen.add(q)
+                todo.append(q)
+    return len(seen)
+
+
 def choose_roots(launch_files: list[str], load: Callable[[str], Any], resolve: Callable[[str], Any],
                  advance: Callable[[int], None],
                  resolve_many: Callable[[list[str], bool], list[Any]] | None = None,
@@ -172,7 +184,10 @@ def choose_roots(launch_files: list[str], load: Callable[[str], Any], resolve: C
     # not alone after it; one that an unnamed include reaches is dropped below like any other.
     names = {n for ts in targets.values() for _, n in ts}
     early = sorted(p for p in leaves if posixpath.basename(p) not in names)
-    wave = early + first
+    # Heaviest first by the includers each may reach (its resolution walks them): with --jobs this
+    # process takes the wave from the front and a helper from the back, so the two meet among
+    # light entries and neither waits long for the other's last one. Results keep their places.
+    wave = early + sorted(first, key=lambda p: -_reach(graph, p))
     by_entry: dict[str, Any] = dict(zip(wave, many(wave, False)))
     included = {f for r in by_entry.values() for f in r.files[1:] if f != r.entry}
     for p in sorted(guessed):  # guesses that did not come true, includers by path

@@ -84,17 +84,16 @@ def no_match(ctx: CheckContext) -> Iterator[Diagnostic]:
 
 def _whole_file(path: str, model: Any, users: list[tuple[Any, Any]]) -> Diagnostic:
     """No key of the file matches any node that loads it."""
-    from physai_lint.params.match import explain_no_match
+    from physai_lint.params.match import explain_for, key_help
 
     block, (node, src) = _closest_pair(model.blocks, users)
     fqns = ", ".join(sorted({f'"{n.fqn}"' for n, _ in users}))
     return Diagnostic(
         "P103", block.key_span,
         f'no node key of "{_rel(path)}" matches the node(s) that load it ({fqns}): '
-        f"{explain_no_match(block.key, node.fqn)}; the whole file is silently ignored"
+        f"{explain_for(block.key, node)}; the whole file is silently ignored"
         f"{name_note(n for n, _ in users)}",
-        help=f'key the file by the node\'s full name, e.g. "{node.fqn}:", or use a wildcard such as '
-             f'"/**/{node.name}:"',
+        help=key_help(node, whole=True),
         related=(Related(src.span, "loaded here"),),
         key=f"{_rel(path)}:{block.key}")
 
@@ -128,7 +127,7 @@ def _stray_keys(path: str, model: Any, users: list[tuple[Any, Any]], keys: dict[
     ``keys``: the blocks that match each loading node (by ``id``)."""
     from physai_lint.closematch import close_matches
     from physai_lint.params.effective import matching_keys
-    from physai_lint.params.match import explain_no_match
+    from physai_lint.params.match import explain_for, key_help
 
     matched = {id(b) for n in readers
                for b in keys.get(id(n)) or matching_keys(n.fqn, model, n.kind == "composable_node")}
@@ -151,10 +150,9 @@ def _stray_keys(path: str, model: Any, users: list[tuple[Any, Any]], keys: dict[
         yield Diagnostic(
             "P103", block.key_span,
             f'node key "{block.key}" of "{_rel(path)}" matches none of the nodes that load the file: '
-            f"{explain_no_match(block.key, node.fqn)}; the parameters under it are silently ignored"
+            f"{explain_for(block.key, node)}; the parameters under it are silently ignored"
             f"{name_note((node,))}",
-            help=f'key it by the node\'s full name, e.g. "{node.fqn.lstrip("/")}:", or use a wildcard such as '
-                 f'"/**/{node.name}:"',
+            help=key_help(node, whole=False),
             related=(Related(src.span, f"{where(node)} loads it here"),),
             key=f"{_rel(path)}:{block.key}")
 

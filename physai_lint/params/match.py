@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import re
 from functools import lru_cache
+from typing import Any
 
 
 @lru_cache(maxsize=4096)
@@ -40,11 +41,29 @@ def is_universal_key(key: str) -> bool:
 
 
 def composable_key_matches(key: str, fqn: str, nested: bool = False) -> bool:
-    """launch_ros ``to_parameters_list``: only ``/**`` (stored as ``**``) and the exact key."""
+    """launch_ros ``to_parameters_list``: only ``/**`` (stored as ``**``) and the exact key. Nested
+    keys (``robot: {talker: {ros__parameters: ...}}``) are joined with "/", each stripped of its
+    leading "/" (``__normalize_parameters_dict``), as rcl joins them: ``robot/talker``."""
     if nested:
-        return False
+        return re.sub("/+", "/", key).strip("/") == fqn.strip("/")
     k = key.lstrip("/")
     return k == "**" or k == fqn.lstrip("/")
+
+
+def explain_for(key: str, node: Any) -> str:
+    """``explain_no_match`` or, for a composable node, ``explain_composable_no_match``."""
+    if node.kind == "composable_node":
+        return explain_composable_no_match(key, node.fqn)
+    return explain_no_match(key, node.fqn)
+
+
+def key_help(node: Any, whole: bool) -> str:
+    """The help of a P103 finding: the keys that would reach ``node``."""
+    what = "the file" if whole else "it"
+    if node.kind == "composable_node":  # launch_ros honours "/**" and the exact name only
+        return f'key {what} by the component\'s full name, "{node.fqn.lstrip("/")}:", or use "/**:"'
+    full = node.fqn if whole else node.fqn.lstrip("/")
+    return f'key {what} by the node\'s full name, e.g. "{full}:", or use a wildcard such as "/**/{node.name}:"'
 
 
 def _split(fqn: str) -> tuple[str, str]:

@@ -47,8 +47,8 @@ class FileParam:
 @dataclass(frozen=True, slots=True)
 class NodeBlock:
     """A ``<node key>: {ros__parameters: {...}}`` block. ``key`` is the node key as rcl stores it
-    (nested maps joined with ``/``), ``nested`` when it came from nested maps (launch_ros' PyYAML
-    lookup for composable nodes only sees single keys)."""
+    (nested maps joined with ``/``), ``nested`` when it came from nested maps (launch_ros joins
+    those for composable nodes too, each part stripped of its leading ``/``: ``params.match``)."""
 
     key: str
     key_span: Span

@@ -37,6 +37,37 @@ def test_composable_key_matches(key, fqn, ok):
     assert composable_key_matches(key, fqn) is ok
 
 
+@pytest.mark.parametrize("key,fqn,ok", [
+    # launch_ros __normalize_parameters_dict joins nested keys with "/", each lstripped of "/"
+    ("robot/talker", "/robot/talker", True), ("/robot/talker", "/robot/talker", True),
+    ("/robot//talker", "/robot/talker", True),  # {/robot: {/talker: ...}}
+    ("robot/**", "/robot/talker", False), ("robot/talker", "/talker", False),
+])
+def test_nested_composable_keys_are_joined_as_launch_ros_joins_them(key, fqn, ok):
+    assert composable_key_matches(key, fqn, nested=True) is ok
+
+
+def test_p103_on_a_component_suggests_only_keys_launch_ros_honours(demo_findings):
+    launch = (
+        "from launch import LaunchDescription\n"
+        "from launch.substitutions import PathJoinSubstitution\n"
+        "from launch_ros.actions import ComposableNodeContainer\n"
+        "from launch_ros.descriptions import ComposableNode\n"
+        "from launch_ros.substitutions import FindPackageShare\n\n\n"
+        "def generate_launch_description():\n"
+        "    params = PathJoinSubstitution([FindPackageShare('demo'), 'config', 'p.yaml'])\n"
+        "    return LaunchDescription([ComposableNodeContainer(\n"
+        "        name='c', namespace='', package='rclcpp_components', executable='component_container',\n"
+        "        composable_node_descriptions=[ComposableNode(\n"
+        "            package='composition', plugin='composition::Talker', name='talker', namespace='robot',\n"
+        "            parameters=[params])])])\n")
+    files = {"config/p.yaml": "talker:\n  ros__parameters:\n    rate: 1.0\n", "launch/a.launch.py": launch}
+    ((_, message),) = demo_findings(files, "launch/a.launch.py", "P103")
+    assert '"/**/talker"' not in message and "composable nodes ignore other wildcards" in message
+    nested = {**files, "config/p.yaml": "robot:\n  talker:\n    ros__parameters:\n      rate: 1.0\n"}
+    assert demo_findings(nested, "launch/a.launch.py", "P103") == []
+
+
 def test_explain():
     msg = explain_no_match("teleop_node", "/robot1/teleop_node")
     assert msg == ('key "teleop_node" matches /teleop_node only; the node is /robot1/teleop_node '

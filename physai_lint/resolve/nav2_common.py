@@ -809,6 +809,10 @@ def _param_model(vf: VirtualFile, distro: str) -> ParamFileModel | None:
         blocks.append(b)
     model.ops = ops
     model.blocks = blocks
+    if model.flat is not None:  # a rewritten file with no ros__parameters key (rare): generic
+        flat = _remap(model.flat, span, memo)
+        model.flat = dataclasses.replace(flat, params=tuple(
+            unknown(prm) if _has_placeholder(prm.value) else prm for prm in flat.params))
     model.diagnostics = _remap(model.diagnostics, span, memo)
     model.merged_keys = _remap(model.merged_keys, span, memo)
     model.path = vf.source or vf.path
@@ -831,6 +835,11 @@ def _param_model_generic(vf: VirtualFile, model: Any, span: Callable[[Span], Spa
     model.blocks = [dataclasses.replace(b, params=tuple(
         dataclasses.replace(prm, value=None, launch_value=None) if _has_placeholder(prm.value) else prm
         for prm in b.params)) for b in model.blocks]
+    flat = getattr(model, "flat", None)
+    if flat is not None:
+        model.flat = dataclasses.replace(flat, params=tuple(
+            dataclasses.replace(prm, value=None, launch_value=None) if _has_placeholder(prm.value) else prm
+            for prm in flat.params))
     return model
 
 
@@ -852,7 +861,8 @@ def _model_shapes_known() -> bool:
             and names(NodeBlock) == ("key", "key_span", "params", "nested", "params_key_span",
                                      "params_key_exact")
             and names(ParamFileModel) == ("path", "blocks", "diagnostics", "ops", "ok",
-                                          "has_ros_parameters", "distro", "merged_keys", "op_segments"))
+                                          "has_ros_parameters", "distro", "merged_keys", "op_segments",
+                                          "flat"))
     return _SHAPES[0]
 
 

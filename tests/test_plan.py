@@ -187,3 +187,38 @@ def test_components_of_a_timed_container_wait_for_its_timer_once(tmp_path, demo_
     p, _ = _plan(tmp_path, "src/demo/launch/a.launch.py")
     assert [p.labels[v] for v in p.critical_path] == ["/container", "/talker"]
     assert p.critical_delay == 10.0
+
+
+def test_a_part_disabled_by_its_condition_is_not_listed_as_unknown(tmp_path, demo_package) -> None:
+    """An include outside the workspace whose condition is false starts nothing in this run: it is
+    not among the parts that "may start more". The rules judge the file for every run, where it
+    may run and read any argument: L106 stays silent on what is passed to its includer."""
+    child = (
+        "from launch import LaunchDescription\n"
+        "from launch.actions import DeclareLaunchArgument, IncludeLaunchDescription\n"
+        "from launch.conditions import UnlessCondition\n"
+        "from launch.launch_description_sources import PythonLaunchDescriptionSource\n"
+        "from launch.substitutions import LaunchConfiguration\n\n\n"
+        "def generate_launch_description():\n"
+        "    return LaunchDescription([\n"
+        "        DeclareLaunchArgument('multi', default_value='false'),\n"
+        "        IncludeLaunchDescription(PythonLaunchDescriptionSource('/opt/sim/launch/world.launch.py'),\n"
+        "                                 condition=UnlessCondition(LaunchConfiguration('multi'))),\n"
+        "    ])\n")
+    top = (
+        "from launch import LaunchDescription\n"
+        "from launch.actions import IncludeLaunchDescription\n"
+        "from launch.launch_description_sources import PythonLaunchDescriptionSource\n"
+        "from launch.substitutions import PathJoinSubstitution\n"
+        "from launch_ros.substitutions import FindPackageShare\n\n\n"
+        "def generate_launch_description():\n"
+        "    child = PathJoinSubstitution([FindPackageShare('demo'), 'launch', 'child.launch.py'])\n"
+        "    return LaunchDescription([IncludeLaunchDescription(PythonLaunchDescriptionSource(child),\n"
+        "                              launch_arguments={'multi': 'true', 'bogus': '1'}.items())])\n")
+    demo_package({"launch/child.launch.py": child, "launch/top.launch.py": top})
+    opts = CheckOptions(paths=[], workspace=str(tmp_path))
+    data = json.loads(plan(opts, "src/demo/launch/top.launch.py", "json", cwd=str(tmp_path)))
+    assert data["unknown"] == []
+    found = run_check(CheckOptions(paths=[str(tmp_path / "src/demo/launch/top.launch.py")],
+                                   workspace=str(tmp_path), cache=False)).findings
+    assert [f for f in found if f.code == "L106"] == []

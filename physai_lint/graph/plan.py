@@ -285,7 +285,8 @@ def _skeleton(launch: LaunchResult, effective_params: Callable[[NodeInstance], d
     nodes = [n for n in launch.nodes if n.active is not False]
     labels = _labels(nodes)
     plan = Plan(launch.entry, never_started=list(launch.never_started),
-                unknown=sorted(set(launch.opaque), key=lambda o: (o[0].file, o[0].line, o[0].col, o[1])))
+                unknown=sorted(set(launch.opaque) - set(launch.inactive_opaque),  # those start nothing now
+                               key=lambda o: (o[0].file, o[0].line, o[0].col, o[1])))
     for n in nodes:
         plan.vertices[n.id] = PlanVertex(
             n.id, labels[n.id], n.fqn, n.kind, n.package, n.executable, n.file, n.span.line,

@@ -56,7 +56,7 @@ def include(inst: Instantiator, a: ir.Include, scope: Scope) -> None:
                         arguments=args, declared=None, active=fr.active)  # type: ignore[arg-type]
     inst.new_record(rec)
     if path is None:
-        inst.result.opaque.append((a.span, "include of a file that cannot be known statically"))
+        inst.note_opaque((a.span, "include of a file that cannot be known statically"))
         return
     located = inst.packages.locate(path) if inst.packages is not None else None
     if located is None:
@@ -66,7 +66,7 @@ def include(inst: Instantiator, a: ir.Include, scope: Scope) -> None:
     rec.target_source = located.source
     if located.status != "ok" or located.source is None:
         if located.status == "unknown":
-            inst.result.opaque.append((a.span, f'include of "{path}" outside the workspace'))
+            inst.note_opaque((a.span, f'include of "{path}" outside the workspace'))
         return
     source = located.source
     if source in fr.chain:
@@ -75,12 +75,12 @@ def include(inst: Instantiator, a: ir.Include, scope: Scope) -> None:
         return
     if len(fr.chain) >= MAX_INCLUDE_DEPTH:
         rec.status = "unparsed"
-        inst.result.opaque.append((a.span, f"include chain deeper than {MAX_INCLUDE_DEPTH} files"))
+        inst.note_opaque((a.span, f"include chain deeper than {MAX_INCLUDE_DEPTH} files"))
         return
     lf = inst.loader(source)
     if lf is None:
         rec.status = "unparsed"
-        inst.result.opaque.append((a.span, f'included file "{source}" could not be parsed'))
+        inst.note_opaque((a.span, f'included file "{source}" could not be parsed'))
         return
     passed = {name for name, _, _ in args}
     # Arguments that cannot be known (launch_arguments computed from a file, or forwarded from

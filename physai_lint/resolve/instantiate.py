@@ -229,7 +229,7 @@ class Instantiator:
             self.handlers.append((a, fr, dict(scope.locals)))
         elif isinstance(a, ir.OpaqueAction):
             if a.reason:
-                self.result.opaque.append((a.span, a.reason))
+                self.note_opaque((a.span, a.reason))
                 if self.frame.active is not False:
                     self.configs_open.add(self.frame.file)  # its actions may set any configuration
             for value in a.other:
@@ -419,6 +419,13 @@ class Instantiator:
     # ---- includes helpers used by resolve.includes ------------------------------------------------
     def new_record(self, rec: IncludeRecord) -> None:
         self.result.includes.append(rec)
+
+    def note_opaque(self, part: tuple[Span, str]) -> None:
+        """A part of the launch that cannot be known statically (``LaunchResult.opaque``), and
+        whether its condition disables it in this run (``inactive_opaque``)."""
+        self.result.opaque.append(part)
+        if self.frame.active is False:
+            self.result.inactive_opaque.append(part)
 
 
 def resolve_launch(entry: str, cli_args: dict[str, str], loader: Loader,

@@ -205,6 +205,10 @@ class LaunchResult:
     lifecycle_changes: list[tuple[str | None, Span]] = field(default_factory=list)
     # Opaque parts whose effects are unknown: (span, reason)
     opaque: list[tuple[Span, str]] = field(default_factory=list)
+    # The parts of ``opaque`` disabled by a condition false for this run's arguments: they start
+    # nothing now (the plan leaves them out), though with other arguments they might (the rules,
+    # which judge the launch file for every run, still treat them as unknown).
+    inactive_opaque: list[tuple[Span, str]] = field(default_factory=list)
     # Condition values that are not true/false/1/0: (span, value)
     invalid_conditions: list[tuple[Span, str]] = field(default_factory=list)
     # $(dirname)/ThisLaunchFileDir evaluated after an include: (span, got, the file's own dir)

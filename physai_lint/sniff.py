@@ -34,21 +34,20 @@ YAML_SUFFIXES = (".yaml", ".yml")
 # ``{`` or ``,``; not the word in a comment (``# In ComposableNode ros__parameters are not
 # supported``) or in a value.
 _PARAMS_KEY = r"""['"]?ros__parameters[^\s:'"]*['"]?[ \t]*:(?:[ \t\r]|$)"""
-_PARAMS_BLOCK = re.compile(r"(?m)^[ \t]*(?:-[ \t]+)*(?:\?[ \t]+)?" + _PARAMS_KEY)
-_PARAMS_FLOW = re.compile(r"(?m)^([^#\n]*)[{,][ \t]*" + _PARAMS_KEY)
-_PARAMS_BLOCK_B = re.compile(_PARAMS_BLOCK.pattern.encode())
-_PARAMS_FLOW_B = re.compile(_PARAMS_FLOW.pattern.encode())
+# block style, or flow style on a line that no comment has started
+_PARAMS_RX = (r"(?m)^[ \t]*(?:-[ \t]+)*(?:\?[ \t]+)?" + _PARAMS_KEY + "|" +
+              r"^[^#\n]*[{,][ \t]*" + _PARAMS_KEY)
+_PARAMS = re.compile(_PARAMS_RX)
+_PARAMS_B = re.compile(_PARAMS_RX.encode())
 
 
 def has_params_key(data: str | bytes) -> bool:
     """Whether YAML text has a ``ros__parameters`` key: what makes a YAML file a parameter file."""
     if isinstance(data, bytes):
-        if b"ros__parameters" not in data:
-            return False
-        return bool(_PARAMS_BLOCK_B.search(data) or _PARAMS_FLOW_B.search(data))
-    if "ros__parameters" not in data:
-        return False
-    return bool(_PARAMS_BLOCK.search(data) or _PARAMS_FLOW.search(data))
+        return b"ros__parameters" in data and _PARAMS_B.search(data) is not None
+    return "ros__parameters" in data and _PARAMS.search(data) is not None
+
+
 _BY_EXTENSION: dict[str, Format] = {".py": "python", ".xml": "xml", ".yaml": "yaml", ".yml": "yaml"}
 
 _MARKUP = re.compile(r"\ufeff?\s*<")

@@ -1,6 +1,7 @@
 """Package dependencies of launch files: U103 missing-exec-depend (ECOSYSTEM §5)."""
 from __future__ import annotations
 
+import functools
 from collections.abc import Iterator
 
 from physai_lint.checks._util import ir_objects
@@ -85,7 +86,8 @@ METAPACKAGES: dict[str, frozenset[str]] = {
 }
 
 
-def _metapackage_members(name: str) -> set[str]:
+@functools.cache
+def _metapackage_members(name: str) -> frozenset[str]:
     """What metapackage ``name`` brings, through the metapackages among its members."""
     out: set[str] = set()
     todo = [name]
@@ -94,13 +96,13 @@ def _metapackage_members(name: str) -> set[str]:
             if member not in out:
                 out.add(member)
                 todo.append(member)
-    return out
+    return frozenset(out)
 
 
 def _through(ctx: CheckContext, declared: dict[str, int], name: str) -> bool:
     """Whether a declared dependency brings ``name`` at run time: a metapackage holding it
     (``METAPACKAGES``), or a workspace package whose run dependencies reach it."""
-    if any(dep in METAPACKAGES and name in _metapackage_members(dep) for dep in declared):
+    if any(name in _metapackage_members(dep) for dep in declared):
         return True
     return any(name in _run_closure(ctx, dep) for dep in declared)
 

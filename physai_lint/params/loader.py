@@ -524,9 +524,10 @@ def _flat_block(path: str, text: str) -> NodeBlock | None:
                                         quoted, pyyaml_scalar(value.value, quoted, value.tag)))
             elif isinstance(value, yaml.SequenceNode) and all(isinstance(x, yaml.ScalarNode) for x in value.value):
                 items = [(x.value, x.style in ("'", '"'), x.tag) for x in value.value]
-                kinds = {rcl_type_scalar(v, q, t)[0] for v, q, t in items}
-                kind = f"{kinds.pop()}_array" if len(kinds) == 1 else "not_set" if not items else "string_array"
-                params.append(FileParam(name, [rcl_type_scalar(v, q, t)[1] for v, q, t in items], kind,
+                typed = [rcl_type_scalar(v, q, t) for v, q, t in items]
+                kinds = {k for k, _ in typed}
+                kind = "not_set" if not kinds else f"{kinds.pop()}_array" if len(kinds) == 1 else "string_array"
+                params.append(FileParam(name, [v for _, v in typed], kind,  # type: ignore[arg-type]
                                         text[value.start_mark.index:value.end_mark.index],
                                         _span(path, value), key_span, False,
                                         [pyyaml_scalar(v, q, t) for v, q, t in items]))

@@ -832,14 +832,14 @@ def _param_model_generic(vf: VirtualFile, model: Any, span: Callable[[Span], Spa
             op = ("set", "unknown", None, fp)
         ops.append(op)
     model.ops = ops
-    model.blocks = [dataclasses.replace(b, params=tuple(
-        dataclasses.replace(prm, value=None, launch_value=None) if _has_placeholder(prm.value) else prm
-        for prm in b.params)) for b in model.blocks]
-    flat = getattr(model, "flat", None)
-    if flat is not None:
-        model.flat = dataclasses.replace(flat, params=tuple(
+    def blanked(b: Any) -> Any:
+        return dataclasses.replace(b, params=tuple(
             dataclasses.replace(prm, value=None, launch_value=None) if _has_placeholder(prm.value) else prm
-            for prm in flat.params))
+            for prm in b.params))
+
+    model.blocks = [blanked(b) for b in model.blocks]
+    if getattr(model, "flat", None) is not None:
+        model.flat = blanked(model.flat)
     return model
 
 

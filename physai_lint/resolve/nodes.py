@@ -171,7 +171,7 @@ class NodeBuilder:
         if fr.deferred == "timer" or fr.delay not in (0.0,):
             res.delays[inst_.id] = delay
         for tkey, reason, span in fr.trigger:
-            if not any(p[0] == tkey and p[1] == after for p in self.pending):
+            if after is None or not any(p[0] == tkey and p[1] == after for p in self.pending):
                 self.pending.append((tkey, inst_.id, reason, span, fr.delay))
 
     # ---- actions ------------------------------------------------------------------------------

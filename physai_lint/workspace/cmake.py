@@ -52,7 +52,7 @@ class _Interp:
         self.auto_package = False
         self.reads: list[tuple[str, str | None]] = []  # (path, text) of other files read
 
-    def python_scripts(self, a: list[str], cmd: Command) -> None:
+    def python_scripts(self, a: list[str]) -> None:
         """``ament_python_install_package(pkg ... SCRIPTS_DESTINATION dest [SETUP_CFG file])``
         (ament_cmake_python): the console scripts of the package's setup.cfg
         (``[options.entry_points]``, default ``CMAKE_CURRENT_LIST_DIR/setup.cfg``) are installed to
@@ -65,17 +65,17 @@ class _Interp:
         dest = opts.get("SCRIPTS_DESTINATION")
         if dest is None:
             return
-        where = dest[0].strip("/") if dest else UNKNOWN
-        if UNKNOWN in where:
+        where = self.dest(dest[0]) if dest else None
+        if where is None:
             self.info.executables_complete = False
             return
-        if where not in (f"lib/{self.pkg_name}", f"{_PREFIX}/lib/{self.pkg_name}".strip("/")):
+        if where != f"lib/{self.pkg_name}":
             return  # installed elsewhere: not what ros2 run or launch finds
         cfg = opts.get("SETUP_CFG")
-        here = self.vars.get("CMAKE_CURRENT_LIST_DIR", self.pkg_dir)
-        path = (cfg[0] if cfg[0].startswith("/") else f"{here}/{cfg[0]}") if cfg else f"{here}/setup.cfg"
-        text = read_listfile(path) if UNKNOWN not in path else None
-        self.reads.append((path, text))
+        path = self.src_path(cfg[0] if cfg else "setup.cfg")
+        text = read_listfile(path) if path is not None else None
+        if path is not None:
+            self.reads.append((path, text))
         scripts = setup_cfg_console_scripts(text) if text is not None else None
         if scripts is None:
             if cfg:  # named but unreadable; without one, ament installs no scripts
@@ -290,7 +290,7 @@ class _Interp:
             a = self.args(cmd)
             if a:
                 self.info.python_packages.add(a[0])
-                self.python_scripts(a, cmd)
+                self.python_scripts(a)
         elif name in ("ament_auto_package", "autoware_ament_auto_package"):
             # autoware_cmake's autoware_ament_auto_package re-implements ament_auto_package (it only
             # installs headers to include/ instead of include/<pkg>): same INSTALL_TO_SHARE result.

@@ -191,12 +191,11 @@ def call_user(ev: Evaluator, f: UserFunc, args: list[Any], kwargs: dict[str, Any
     (no unknown ``*args``/``**kwargs``), so one its signature refuses is noted (TypeError)."""
     from .evaluator import MAX_DEPTH, Abort, Scope
 
-    if written and span not in ev.call_errors:
-        refused = refused_arguments(f.node, len(f.defaults), set(f.kw_defaults), len(args), list(kwargs))
-        if refused is not None:
-            ev.call_errors[span] = ConcatFact("call", span, refused)  # type: ignore[arg-type]
-    if written and span in ev.call_errors:  # Python raises here: nothing the body builds exists
-        return Opaque(f"raises TypeError: {ev.call_errors[span].detail}", span)
+    refused = refused_arguments(f.node, len(f.defaults), set(f.kw_defaults), len(args), list(kwargs)) \
+        if written else None
+    if refused is not None:  # Python raises here: nothing the body builds exists
+        ev.call_errors.setdefault(span, ConcatFact("call", span, refused))  # type: ignore[arg-type]
+        return Opaque(f"raises TypeError: {refused}", span)
     if ev.depth >= MAX_DEPTH:
         return Opaque("call depth limit reached (recursive helper?)", span)
     if any(isinstance(v, Opaque) for v in [*args, *kwargs.values()]) and \

@@ -200,6 +200,11 @@ def chain(cls: ClassValue | None) -> Iterator[ClassValue]:
         cls = cls.base
 
 
+def _unknown_base(cls: ClassValue) -> str | None:
+    """Why a base class of ``cls`` cannot be followed (``ClassValue.unknown_base``), if one cannot."""
+    return next((c.unknown_base for c in chain(cls) if c.unknown_base), None)
+
+
 def lookup(cls: ClassValue, name: str) -> Any:
     for c in chain(cls):
         if name in c.attrs:
@@ -212,7 +217,7 @@ def instantiate(ev: Evaluator, cls: ClassValue, args: list[Any], kwargs: dict[st
     """``cls(*args, **kwargs)``; ``written``: a call the file writes (``call_user``)."""
     from .calls import call_user
 
-    hidden = next((c.unknown_base for c in chain(cls) if c.unknown_base), None)
+    hidden = _unknown_base(cls)
     if hidden is not None:  # its base's __init__ (or __new__) may run: what it builds is unknown
         ev.escape([*args, *kwargs.values()])  # and it may read the configurations it is given
         return Opaque(f'class "{cls.name}" cannot be evaluated statically: {hidden}', span)
@@ -293,7 +298,7 @@ def get_attr(ev: Evaluator, obj: ClassValue | Instance | SuperProxy, attr: str, 
         cls = obj.cls if isinstance(obj, Instance) else obj
     v = lookup(cls, attr)
     if v is None and not any(attr in c.attrs for c in chain(cls)):
-        hidden = next((c.unknown_base for c in chain(cls) if c.unknown_base), None)
+        hidden = _unknown_base(cls)
         if hidden is not None:
             return Opaque(f'"{attr}" of class "{cls.name}" may come from its base: {hidden}', span)
         return Opaque(f'"{cls.name}" has no attribute "{attr}" known statically', span)

@@ -57,6 +57,9 @@ def duplicate_node_name(ctx: CheckContext) -> Iterator[Diagnostic]:
                     related=tuple(Related(s, "included here") for s in sites[:5]),
                     key=node.fqn)
                 continue
+            if p.span == node.span:  # one action run again: a loop, or a function called twice
+                yield _repeated(launch, node, sites)
+                continue
             yield Diagnostic(
                 "N101", span,
                 f'node "{node.fqn}" is launched twice (also at line {p.span.line}); '
@@ -64,6 +67,32 @@ def duplicate_node_name(ctx: CheckContext) -> Iterator[Diagnostic]:
                 help="give each node its own name or namespace (PushRosNamespace / namespace=)",
                 related=(Related(p.spans.get("name", p.span), "first launched here"),),
                 key=node.fqn)
+
+
+def _repeated(launch: LaunchResult, node: NodeInstance, sites: list[Any]) -> Diagnostic:
+    """N101 for a node that one action launches several times (its own line, not another's)."""
+    times = sum(1 for n in launch.nodes if n.span == node.span and n.fqn == node.fqn
+                and n.active is True and n.kind != "composable_node")
+    span = node.spans.get("name", node.span)
+    count = "twice" if times == 2 else f"{times} times"
+    runs = sum(1 for i in launch.includes if sites and i.span == sites[0] and i.active is not False)
+    if runs > 1:  # its file is included again and again by one include
+        return Diagnostic(
+            "N101", span,
+            f'node "{node.fqn}" is launched {count}: {relpath(node.file)} is included '
+            f"{runs} times through one include (in a loop or a function called again) in the same "
+            f"namespace; services, parameters and topics of the copies collide{name_note((node,))}",
+            help="give each inclusion its own namespace (PushRosNamespace in a GroupAction around "
+                 "the include), or a name built from the loop's value",
+            related=(Related(sites[0], "included here"),),
+            key=node.fqn)
+    return Diagnostic(
+        "N101", span,
+        f'node "{node.fqn}" is launched {count} by this one action (in a loop or a function '
+        f"called again); services, parameters and topics of the copies collide{name_note((node,))}",
+        help=f"build the name or namespace from the loop's value (name=f'{node.name}_{{i}}' or "
+             "namespace=...)",
+        key=node.fqn)
 
 
 def _named(node: NodeInstance) -> bool:

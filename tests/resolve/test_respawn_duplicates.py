@@ -33,8 +33,8 @@ def test_a_node_respawned_when_it_exits_is_no_duplicate(demo_findings):
 
 def test_a_node_started_when_another_process_exits_is_still_a_duplicate(demo_findings):
     assert _n101(demo_findings, LAUNCH.format(target="supervisor")) == [(
-        'node "/talker" is launched twice (also at line 9); services, parameters and topics of '
-        "the two collide")]
+        'node "/talker" is launched twice by this one action (in a loop or a function called again); '
+        "services, parameters and topics of the copies collide")]
 
 
 def test_a_node_that_launch_respawns_itself_may_run_beside_the_copy(demo_findings):

@@ -61,13 +61,13 @@ def test_chain_plan_structure() -> None:
     p, _ = _plan(FIXTURES / "chain_ws", "src/demo/launch/chain.launch.py")
     labels = p.labels
     stage_of = {labels[v]: i for i, s in enumerate(p.stages, 1) for v in s}
-    assert stage_of["ros2_control_node"] == 1 and stage_of["spawner [joint_state_broadcaster]"] == 1
+    assert stage_of["/controller_manager"] == 1 and stage_of["spawner [joint_state_broadcaster]"] == 1
     assert stage_of["spawner [arm_controller]"] == 2 and stage_of["rviz2"] == 2
     assert stage_of["/talker"] == stage_of["/container"] + 1
     assert stage_of["/planner_server"] == stage_of["/controller_server"] + 1  # lifecycle order
     assert stage_of["/lifecycle_manager"] > stage_of["/planner_server"]
     assert p.cycles == []
-    assert [labels[x] for x in p.critical_path] == ["ros2_control_node", "rviz2"]
+    assert [labels[x] for x in p.critical_path] == ["/controller_manager", "rviz2"]
     assert p.critical_delay == 3.0
 
 

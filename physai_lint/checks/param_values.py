@@ -73,7 +73,7 @@ def type_mismatch(ctx: CheckContext) -> Iterator[Diagnostic]:
             f'parameter "{ep.name}" of {node.fqn or node.executable} is declared {decl.type}{where} '
             f"but is given {_fmt(ep.value)}, {_article(got)} {got}; the node fails at start-up with "
             f"InvalidParameterTypeException{fix}",
-            help=f"give a {decl.type} value{fix}",
+            help=f"give {_article(decl.type)} {decl.type} value{fix}",
             related=((Related(decl.span, "declared here"),) if decl.span else ()),
             key=f"{node.fqn}:{ep.name}")
 

@@ -211,6 +211,9 @@ def _bundled_entry(data: dict[str, Any], path: str, distro: str = "humble") -> N
         iface.node_name, iface.node_name_decided = (name if isinstance(name, str) else None), True
     iface.parameter_patterns = list(data.get("parameter_patterns", []) or [])
     iface.lifecycle = data.get("lifecycle") is True
+    for u in data.get("unnamed") or ():  # plugins' endpoints: names known only at run time
+        if isinstance(u, dict) and u.get("kind") in ENDPOINT_KINDS:
+            iface.unnamed.append((u["kind"], u.get("type")))
     return iface
 
 
@@ -258,7 +261,10 @@ def merge(layers: Iterable[NodeInterface]) -> NodeInterface | None:
                 setattr(out, kind, list(v))
                 chosen = layer
                 break
-        if chosen is None or chosen.source.startswith("extracted"):  # the code's word on this kind
+        if chosen is None and any(not x.source.startswith("extracted") and x.unnamed for x in layers):
+            # no list of this kind anywhere: every layer's endpoints named only at run time
+            out.unnamed.extend(u for layer in layers for u in layer.unnamed if u[0] == kind)
+        elif chosen is None or chosen.source.startswith("extracted"):  # the code's word on this kind
             out.unnamed.extend(u for layer in layers if layer.source.startswith("extracted")
                                for u in layer.unnamed if u[0] == kind)
         else:  # a declaration's: those of its endpoints named only at run time

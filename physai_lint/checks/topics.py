@@ -241,8 +241,12 @@ def _dangling(ctx: CheckContext, mine: str, other: str, code: str) -> Iterator[D
     for g in graphs(ctx):
         if g.has_unknown_endpoints():
             continue  # some node's topics are unknown: it might be the missing end
-        if len({e.node for e in g.endpoints if e.kind in ("publisher", "subscriber")}) < 2:
-            continue  # a launch of one node (a filter, a driver): its inputs and outputs are others'
+        if len({e.node for e in g.endpoints if e.kind in ("publisher", "subscriber") and e.resolved
+                and e.resolved not in _IMPLICIT_TOPICS
+                and not any(fnmatchcase(e.resolved, p) for p in ignore)}) < 2:
+            # a launch of one node (a filter, a driver) whose inputs and outputs are others': a
+            # static transform or a clock beside it changes nothing
+            continue
         by_topic: dict[str, set[str]] = {}  # topic -> nodes with an endpoint of the other kind
         types: dict[str, set[str | None]] = {}  # topic -> the message types of those endpoints
         for o in g.of_kind(other):  # type: ignore[arg-type]

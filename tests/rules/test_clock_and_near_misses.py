@@ -47,3 +47,28 @@ def test_a_near_miss_of_another_message_type_is_no_suggestion(demo_findings: Any
     # operator's reset of the EKF, expected from outside the launch
     assert any('"/robot_poses" but nothing publishes it' in m and "did you mean" not in m for m in found)
     assert not any("set_pose" in m for m in found)
+
+
+TF_BESIDE = """from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='demo', executable='mover', name='mover'),
+        Node(package='tf2_ros', executable='static_transform_publisher',
+             arguments=['0', '0', '0', '0', '0', '0', 'base_link', 'lidar']),
+    ])
+"""
+
+
+def test_a_static_transform_beside_one_node_keeps_it_a_one_node_launch(demo_findings: Any) -> None:
+    # the mover's inputs come from a driver or a bag: a node that only publishes /tf_static (an
+    # ignored topic) does not make the launch a system whose topics must all connect
+    files = {**FILES, "launch/tf.launch.py": TF_BESIDE}
+    assert demo_findings(files, "launch/tf.launch.py", "T201") == []
+    sim = {**files, "launch/tf.launch.py": TF_BESIDE.replace(
+        "        Node(package='tf2_ros'", "        Node(package='demo', executable='sim', name='sim'),\n"
+        "        Node(package='tf2_ros'")}
+    assert any('"/robot_poses" but nothing publishes it' in m
+               for _, m in demo_findings(sim, "launch/tf.launch.py", "T201"))

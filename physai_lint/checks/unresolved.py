@@ -32,8 +32,26 @@ KNOWN_EXECUTABLE_HOMES = {
 }
 
 
+# Packages renamed upstream: the Ignition -> Gazebo rename of ros_ign (humble ships both, later
+# distros only ros_gz), and Gazebo Classic's ROS packages, which end with humble.
+RENAMED = {
+    "ros_ign": "ros_gz", "ros_ign_bridge": "ros_gz_bridge", "ros_ign_gazebo": "ros_gz_sim",
+    "ros_ign_gazebo_demos": "ros_gz_sim_demos", "ros_ign_image": "ros_gz_image",
+    "ros_ign_interfaces": "ros_gz_interfaces", "gazebo_ros": "ros_gz_sim",
+    "gazebo_ros_pkgs": "ros_gz", "gazebo_plugins": "gz_ros2_control or ros_gz_bridge",
+}
+
+
 def _package_help(ctx: CheckContext, name: str, executable: str | None) -> tuple[str, str]:
+    from physai_lint.workspace.distro import released_in
+
     hints = []
+    elsewhere = released_in(name)
+    if elsewhere:
+        hints.append(f"it is released for {', '.join(elsewhere)}, not for {ctx.distro}")
+        if name in RENAMED:
+            hints.append(f"its successor is {RENAMED[name]}")
+            return "; " + "; ".join(hints), f"use {RENAMED[name]}, or run with --distro {elsewhere[-1]}"
     home = KNOWN_EXECUTABLE_HOMES.get(executable or "") or KNOWN_EXECUTABLE_HOMES.get(name)
     if home and ctx.packages.has_package(home):
         hints.append(f'the "{executable or name}" executable is provided by package "{home}"')
@@ -46,6 +64,17 @@ def _package_help(ctx: CheckContext, name: str, executable: str | None) -> tuple
                    "check the package name, add the package to the workspace, or install it")
 
 
+def _declared(ctx: CheckContext, name: str, file: str | None) -> bool:
+    """Whether the package holding ``file`` declares a run dependency on ``name``: rosdep installs
+    it from wherever its rules point (a vendor's apt source, a private rosdep key), which the
+    workspace and the distro's package list cannot show, so its absence here is no mistake."""
+    from physai_lint.workspace.distro import released_in
+
+    owner = ctx.packages.package_of_source(file) if file else None
+    return owner is not None and owner.valid and name in ctx.packages.exec_depends(owner.name) \
+        and not released_in(name)  # one released elsewhere has no rosdep key for this distro
+
+
 @rule("U101", "unknown-package")
 def unknown_package(ctx: CheckContext) -> Iterator[Diagnostic]:
     reported: set[tuple[object, str]] = set()
@@ -53,7 +82,7 @@ def unknown_package(ctx: CheckContext) -> Iterator[Diagnostic]:
         if node.package is None or ctx.packages.has_package(node.package):
             continue
         span = node.spans.get("package", node.span)
-        if (span, node.package) in reported:
+        if (span, node.package) in reported or _declared(ctx, node.package, span.file or node.file):
             continue
         reported.add((span, node.package))
         extra, fix = _package_help(ctx, node.package, node.executable)
@@ -63,7 +92,8 @@ def unknown_package(ctx: CheckContext) -> Iterator[Diagnostic]:
             help=fix, key=node.package)
     for launch in ctx.launches:
         for name, span, _file, _from_config in launch.package_refs:
-            if span is None or ctx.packages.has_package(name) or (span, name) in reported:
+            if span is None or ctx.packages.has_package(name) or (span, name) in reported \
+                    or _declared(ctx, name, span.file or _file):
                 continue
             reported.add((span, name))
             extra, fix = _package_help(ctx, name, None)

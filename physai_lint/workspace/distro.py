@@ -25,6 +25,11 @@ def released_packages(distro: str) -> frozenset[str]:
     return _load()[distro]
 
 
+def released_in(name: str) -> tuple[str, ...]:
+    """The distros (of ``DISTROS``, in that order) that release package ``name``."""
+    return tuple(d for d in DISTROS if name in _load()[d])
+
+
 def source_commit() -> str:
     with open(_DATA, encoding="utf-8") as fh:
         return str(json.load(fh)["_source"]["commit"])

@@ -222,3 +222,33 @@ def test_a_part_disabled_by_its_condition_is_not_listed_as_unknown(tmp_path, dem
     found = run_check(CheckOptions(paths=[str(tmp_path / "src/demo/launch/top.launch.py")],
                                    workspace=str(tmp_path), cache=False)).findings
     assert [f for f in found if f.code == "L106"] == []
+
+
+def test_what_only_a_handler_of_a_disabled_action_starts_never_starts(tmp_path, demo_package) -> None:
+    """The handler's target is off under the analysed arguments, so the handler never fires and
+    the spawner it starts never starts: not a process that starts with the launch."""
+    text = (
+        "from launch import LaunchDescription\n"
+        "from launch.actions import DeclareLaunchArgument, RegisterEventHandler\n"
+        "from launch.conditions import IfCondition\n"
+        "from launch.event_handlers import OnProcessExit\n"
+        "from launch.substitutions import LaunchConfiguration\n"
+        "from launch_ros.actions import Node\n\n\n"
+        "def generate_launch_description():\n"
+        "    jsb = Node(package='controller_manager', executable='spawner', arguments=['jsb'],\n"
+        "               condition=IfCondition(LaunchConfiguration('use_jsb')))\n"
+        "    arm = Node(package='controller_manager', executable='spawner', arguments=['arm'])\n"
+        "    return LaunchDescription([\n"
+        "        DeclareLaunchArgument('use_jsb', default_value='false'),\n"
+        "        Node(package='controller_manager', executable='ros2_control_node'),\n"
+        "        jsb,\n"
+        "        RegisterEventHandler(OnProcessExit(target_action=jsb, on_exit=[arm])),\n"
+        "    ])\n")
+    demo_package({"launch/chain.launch.py": text})
+    p, _ = _plan(tmp_path, "src/demo/launch/chain.launch.py")
+    assert {p.labels[v] for v in p.never_starts} == {"spawner"}
+    assert [m for _, m in p.never_started] == [
+        "the target action of its OnProcessExit is disabled by its condition"]
+    p, _ = compute_plan(CheckOptions(paths=[], workspace=str(tmp_path), launch_args={"use_jsb": "true"}),
+                        "src/demo/launch/chain.launch.py", cwd=str(tmp_path))
+    assert p.never_starts == set() and len(p.stages) == 2

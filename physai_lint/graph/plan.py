@@ -304,7 +304,13 @@ def _skeleton(launch: LaunchResult, effective_params: Callable[[NodeInstance], d
                 (e.before, e.after) == (h.before, h.after) for h in hard):
             seen.add((e.before, e.after, e.reason))
             hard.append(e)
-    startable = _startable(ids, hard, {n.id: n.active for n in nodes})
+    # a handler whose every target is off under the analysed arguments never fires: what only it
+    # starts never starts (the off targets are no vertices, but their edges still count here)
+    off = {n.id for n in launch.nodes if n.active is False} - ids
+    dead = [PlanEdge(se.before, se.after, se.reason, False, se.delay, se.span) for se in launch.edges
+            if se.before in off and se.after in ids and not se.soft and se.reason in HANDLER_REASONS]
+    startable = _startable(ids | off, hard + dead, {**dict.fromkeys(off, False), **{n.id: n.active for n in nodes}})
+    startable &= ids
     plan.never_starts = ids - startable
     return plan, ids, hard, startable
 

@@ -331,9 +331,19 @@ class NodeBuilder:
             if file in opaque_files:
                 continue
             if seen == "never":
-                res.never_started.append((h.span, f"its target action is never added to the launch description ({h.event})"))
+                res.never_started.append((h.span, f"the target action of its {_EVENT_CLASS.get(h.event, h.event)} is never "
+                                                  "added to the launch description"))
             elif seen is False:
-                res.never_started.append((h.span, f"its target action is disabled by its condition ({h.event})"))
+                res.never_started.append((h.span, f"the target action of its {_EVENT_CLASS.get(h.event, h.event)} is "
+                                                  "disabled by its condition"))
+
+
+# The handler classes behind ``EventHandler.event`` (launch.event_handlers, launch_ros's
+# OnStateTransition), for messages.
+_EVENT_CLASS = {"on_process_start": "OnProcessStart", "on_process_exit": "OnProcessExit",
+                "on_execution_complete": "OnExecutionComplete", "on_process_io": "OnProcessIO",
+                "on_state_transition": "OnStateTransition", "on_shutdown": "OnShutdown",
+                "on_include_launch_description": "OnIncludeLaunchDescription"}
 
 
 def _remap_matters(lst: list[Any], i: int) -> bool:

@@ -252,3 +252,18 @@ def test_what_only_a_handler_of_a_disabled_action_starts_never_starts(tmp_path, 
     p, _ = compute_plan(CheckOptions(paths=[], workspace=str(tmp_path), launch_args={"use_jsb": "true"}),
                         "src/demo/launch/chain.launch.py", cwd=str(tmp_path))
     assert p.never_starts == set() and len(p.stages) == 2
+
+
+def test_spawner_labels_name_the_controllers_not_the_options_values() -> None:
+    from physai_lint.graph.plan import first_positional
+
+    def label(*args: str | None, exe: str = "spawner") -> str | None:
+        return first_positional(args, package="controller_manager", executable=exe)
+
+    assert label("-c", "/controller_manager", "joint_state_broadcaster") == "joint_state_broadcaster"
+    assert label("jsb", "arm", "--inactive", "-p", "/cfg/arm.yaml", "--controller-manager-timeout", "30") \
+        == "jsb, arm"
+    assert label("--controller-manager=/cm", "jsb", "--fallback_controllers", "safe", "-t", "x/Y") == "jsb"
+    assert label("-c", None, "jsb") is None  # an option's value unknown: where the names start is too
+    # other executables: the first positional argument, as before
+    assert first_positional(("-c", "/controller_manager", "jsb")) == "controller_manager"

@@ -119,16 +119,42 @@ def vertex_key(v: PlanVertex) -> tuple[Any, ...]:
     return (v.fqn is None, _natural(v.fqn or v.label), _natural(v.id))
 
 
-def first_positional(args: tuple[str | None, ...], limit: int = 32) -> str | None:
+# Options of controller_manager's spawner scripts that take a value (controller_manager/spawner.py,
+# unspawner.py, hardware_spawner.py, humble to rolling): the value is not a controller's name.
+# --fallback_controllers takes every name up to the next option.
+_SPAWNER_VALUE_OPTIONS = frozenset({
+    "-c", "--controller-manager", "-p", "--param-file", "-n", "--namespace", "-t", "--controller-type",
+    "--controller-manager-timeout", "--switch-timeout", "--service-call-timeout", "--controller-ros-args"})
+_SPAWNERS = frozenset({"spawner", "unspawner", "hardware_spawner", "spawner.py", "unspawner.py"})
+
+
+def first_positional(args: tuple[str | None, ...], limit: int = 32, package: str | None = None,
+                     executable: str | None = None) -> str | None:
     """The first positional argument before ``--ros-args`` (``spawner [arm_controller]``); a path
-    is shortened to its file name, a long value cut to ``limit`` characters."""
+    is shortened to its file name, a long value cut to ``limit`` characters. For controller_manager's
+    spawners, every controller name, without the options' values (``spawner [jsb, arm]``)."""
+    spawner = package == "controller_manager" and executable in _SPAWNERS
+    found: list[str] = []
+    skip = nargs = False
     for a in args:
         if a is None or a == "--ros-args":
-            return None  # unknown, or ROS arguments (log levels, remaps) from here on
-        if a and not a.startswith("-"):
-            a = a.rstrip("/").rsplit("/", 1)[-1] or a
-            return a if len(a) <= limit else a[:limit - 1] + "…"
-    return None
+            break  # unknown, or ROS arguments (log levels, remaps) from here on
+        if skip:
+            skip = False
+            continue
+        if a.startswith("-"):
+            if spawner:
+                skip = "=" not in a and a in _SPAWNER_VALUE_OPTIONS
+                nargs = a == "--fallback_controllers"
+            continue
+        if a and not nargs:
+            found.append(a.rstrip("/").rsplit("/", 1)[-1] or a)
+            if not spawner:
+                break
+    text = ", ".join(found)
+    if not text:
+        return None
+    return text if len(text) <= limit else text[:limit - 1] + "…"
 
 
 def _labels(nodes: list[NodeInstance]) -> dict[str, str]:
@@ -144,7 +170,8 @@ def _labels(nodes: list[NodeInstance]) -> dict[str, str]:
         return {n.id: how(n, labels[n.id]) if counts[labels[n.id]] > 1 else labels[n.id] for n in nodes}
 
     out = refine(base, lambda n, lbl: f"{lbl} (component)" if n.kind == "composable_node" else lbl)
-    out = refine(out, lambda n, lbl: f"{lbl} [{a}]" if (a := first_positional(n.arguments)) else lbl)
+    out = refine(out, lambda n, lbl: f"{lbl} [{a}]" if (a := first_positional(
+        n.arguments, package=n.package, executable=n.executable)) else lbl)
     out = refine(out, lambda n, lbl: f"{lbl} (line {n.span.line})")
     return refine(out, lambda n, lbl: f"{lbl} #{n.id}")
 

@@ -17,7 +17,8 @@ def _label(n: dict[str, Any]) -> str:
         return str(n["fqn"])
     from physai_lint.graph.plan import first_positional
 
-    arg = first_positional(tuple(n.get("arguments") or ()))
+    arg = first_positional(tuple(n.get("arguments") or ()), package=n.get("package"),
+                           executable=n.get("executable"))
     return f"{n['package'] or '?'}/{n['executable'] or '?'}" + (f" [{arg}]" if arg else "")
 
 

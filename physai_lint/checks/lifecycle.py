@@ -43,7 +43,11 @@ def not_launched(ctx: CheckContext) -> Iterator[Diagnostic]:
         if any(n.fqn is None for n in nodes) or launch.opaque:
             continue  # an unknown node might be the one it manages
         fqns = {n.fqn for n in nodes}
-        for mgr, names, ep in managers(ctx, launch):
+        mgrs = list(managers(ctx, launch))
+        # a node some manager already lists, or a manager, is no candidate for a misspelt name
+        listed = {expand_topic_name(n, m.name, m.namespace) for m, names, _ in mgrs for n in names}
+        listed |= {m.fqn for m, _, _ in mgrs}
+        for mgr, names, ep in mgrs:
             for i, name in enumerate(names):
                 target = expand_topic_name(name, mgr.name, mgr.namespace)
                 if target is None or target in fqns:
@@ -52,7 +56,7 @@ def not_launched(ctx: CheckContext) -> Iterator[Diagnostic]:
                 if (span, target) in seen:
                     continue
                 seen.add((span, target))
-                candidates = sorted(f for f in fqns if f)
+                candidates = sorted(f for f in fqns if f and f not in listed)
                 close = did_you_mean(target, candidates)
                 hint = ("; did you mean " + " or ".join(f'"{c}"' for c in close) + "?") if close else ""
                 yield Diagnostic(

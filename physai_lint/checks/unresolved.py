@@ -85,17 +85,33 @@ def unknown_package(ctx: CheckContext) -> Iterator[Diagnostic]:
         if (span, node.package) in reported or _declared(ctx, node.package, span.file or node.file):
             continue
         reported.add((span, node.package))
+        if not node.package:
+            yield Diagnostic(
+                "U101", span, "the package name is empty (its value here is \"\"); ament_index refuses "
+                "an empty name and the launch aborts",
+                help="name the package, or pass the launch argument that gives it", key="empty")
+            continue
         extra, fix = _package_help(ctx, node.package, node.executable)
         yield Diagnostic(
             "U101", span,
             f'package "{node.package}" is not in the workspace or the {ctx.distro} distro{extra}',
             help=fix, key=node.package)
     for launch in ctx.launches:
-        for name, span, _file, _from_config in launch.package_refs:
+        for name, span, _file, from_config in launch.package_refs:
             if span is None or ctx.packages.has_package(name) or (span, name) in reported \
                     or _declared(ctx, name, span.file or _file):
                 continue
             reported.add((span, name))
+            if not name and from_config:  # a required argument's placeholder default, not set
+                arg = f'launch argument "{from_config}"' if isinstance(from_config, str) else "a launch argument"
+                yield Diagnostic(
+                    "U101", span,
+                    f"the package name is empty: it comes from {arg}, whose value is \"\" here; "
+                    "ament_index refuses an empty name (an AssertionError on humble, a ValueError later) and "
+                    "the launch aborts",
+                    help="pass the argument (name:=package) or give it a default naming a package",
+                    key=f"empty:{from_config}")
+                continue
             extra, fix = _package_help(ctx, name, None)
             yield Diagnostic(
                 "U101", span,

@@ -39,7 +39,8 @@ class Scope:
 
 
 ReadHook = Callable[[str, Span | None, bool, bool], None]  # name, span, defined, has_default
-PackageHook = Callable[[str, Span | None, bool], None]  # name, span, named by a launch configuration
+# name, span, named by a launch configuration (its name when it alone gave the value)
+PackageHook = Callable[[str, Span | None, "bool | str"], None]
 
 
 def condition_truth(text: str) -> bool | None:
@@ -83,10 +84,17 @@ class Evaluator:
         # launch configurations looked up so far: a value whose evaluation moves it depends on one
         self.config_lookups = 0
 
-    def eval_noting_configs(self, value: v.Value | None, scope: Scope) -> tuple[str | None, bool]:
-        """(``eval``, whether it looked up a launch configuration: ``$(var model)_description``)."""
+    def eval_noting_configs(self, value: v.Value | None, scope: Scope) -> tuple[str | None, bool | str]:
+        """(``eval``, whether it looked up a launch configuration: ``$(var model)_description``;
+        the configuration's name when the value is that one configuration alone)."""
         before = self.config_lookups
-        return self.eval(value, scope), self.config_lookups != before
+        out = self.eval(value, scope)
+        if self.config_lookups == before:
+            return out, False
+        only = value[0] if value is not None and len(value) == 1 else None
+        if isinstance(only, v.LaunchConfig) and len(only.name) == 1 and isinstance(only.name[0], v.Text):
+            return out, only.name[0].text
+        return out, True
 
     def eval(self, value: v.Value | None, scope: Scope) -> str | None:
         if value is None:

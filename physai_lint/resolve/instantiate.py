@@ -113,7 +113,7 @@ class Instantiator:
         for arg in self.declared_by_name.get(name, ()):
             arg.reads += 1
 
-    def _on_package(self, name: str, span: Span | None, from_config: bool) -> None:
+    def _on_package(self, name: str, span: Span | None, from_config: bool | str) -> None:
         self.result.package_refs.append((name, span, self.frame.file, from_config))
 
     def _on_dirname(self, span: Span | None, scope: Scope) -> None:

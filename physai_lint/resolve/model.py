@@ -193,7 +193,8 @@ class LaunchResult:
     timers: list[tuple[Span, float | None, str]] = field(default_factory=list)
     # Packages referenced by FindPackageShare/$(find-pkg-share)/get_package_share_directory/...:
     # (name, span, file, whether the name came from a launch configuration, e.g. $(var model)_description)
-    package_refs: list[tuple[str, Span | None, str, bool]] = field(default_factory=list)
+    # (name, where, file, whether a launch configuration gave it: its name when it alone did)
+    package_refs: list[tuple[str, Span | None, str, bool | str]] = field(default_factory=list)
     # Every PushRosNamespace: (span, the namespace as written, the resulting namespace or None)
     pushed_namespaces: list[tuple[Span, str | None, str | None]] = field(default_factory=list)
     # SetRemap/SetParameter inside a scoped group that reach nodes after it: (span, what, the outer

@@ -49,3 +49,33 @@ def test_a_declared_package_of_another_distro_is_still_reported(
     assert f.message == ('package "ros_ign_gazebo" is not in the workspace or the jazzy distro; it is '
                          "released for humble, not for jazzy; its successor is ros_gz_sim")
     assert f.help == "use ros_gz_sim, or run with --distro humble"
+
+
+EMPTY = """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration, PathJoinSubstitution
+from launch_ros.actions import Node
+from launch_ros.substitutions import FindPackageShare
+
+
+def generate_launch_description():
+    urdf = PathJoinSubstitution([FindPackageShare(LaunchConfiguration("description_package")), "urdf"])
+    return LaunchDescription([
+        DeclareLaunchArgument("description_package", default_value=""),
+        Node(package="robot_state_publisher", executable="robot_state_publisher", arguments=[urdf]),
+    ])
+"""
+
+
+def test_an_empty_package_name_names_the_argument_it_comes_from(demo_findings: Any) -> None:
+    (found,) = demo_findings({"launch/a.launch.py": EMPTY}, "launch/a.launch.py", "U101")
+    assert found[1].startswith('the package name is empty: it comes from launch argument '
+                               '"description_package", whose value is "" here; ')
+
+
+def test_a_node_of_an_empty_package_says_the_name_is_empty(demo_findings: Any) -> None:
+    text = EMPTY.replace('package="robot_state_publisher"', 'package=LaunchConfiguration("description_package")')
+    found = demo_findings({"launch/a.launch.py": text}, "launch/a.launch.py", "U101")
+    assert [m.split(";")[0] for _, m in found] == [
+        'the package name is empty: it comes from launch argument "description_package", whose value is "" here',
+        'the package name is empty (its value here is "")']

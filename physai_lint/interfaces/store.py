@@ -176,6 +176,11 @@ def _declared_node_name(iface: NodeInterface, value: yaml.Node, path: str, diags
     iface.node_name, iface.node_name_span, iface.node_name_decided = value.value, node_span(path, value), True
 
 
+def _python_script(path: str, text: str) -> bool:
+    """A program without an extension whose first line runs Python (``#!/usr/bin/env python3``)."""
+    return "." not in path.rsplit("/", 1)[-1] and text.startswith("#!") and "python" in text.split("\n", 1)[0]
+
+
 # ---- bundled schemas ----------------------------------------------------------------------------
 
 def _bundled_entry(data: dict[str, Any], path: str, distro: str = "humble") -> NodeInterface:
@@ -309,7 +314,7 @@ class InterfaceStore:
         the classes its own code names (or the ``roots``: a component's plugin class) run."""
         cpp = [(p, t) for p, t in files if p.endswith(_CPP)]
         lib = [(p, t) for p, t in library or () if p.endswith(_CPP)]
-        py = [(p, t) for p, t in files if p.endswith(".py")]
+        py = [(p, t) for p, t in files if p.endswith(".py") or _python_script(p, t)]
         layers = []
         if cpp or lib:
             layers.append(extract_linked(cpp, lib, list(roots or ()), self.cache, self._read,

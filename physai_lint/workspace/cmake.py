@@ -428,17 +428,21 @@ class _Interp:
             if dest is None and opts.get("TYPE"):
                 dest = {"BIN": "bin", "DATA": "share", "SYSCONF": "etc", "LIB": "lib"}.get(opts["TYPE"][0])
             rename = opts["RENAME"][0] if opts.get("RENAME") else None
+            # install(FILES ... PERMISSIONS OWNER_EXECUTE ...) installs a program too
+            runnable = mode == "PROGRAMS" or any(p.endswith("_EXECUTE") for p in opts.get("PERMISSIONS", ()))
             for f in files:
                 src = self.src_path(f)
                 self.add_rule("file", dest, src, cmd.line, origin, rename=rename)
-                if mode == "PROGRAMS" and dest == lib_dest:
+                if runnable and dest == lib_dest:
                     exe = rename or os.path.basename(f)
                     if UNKNOWN in exe:
                         self.info.executables_complete = False
                     else:
                         self.info.executables.add(exe)
-                        if src is not None and src.endswith(".py"):
-                            # a Python node installed as a program: its code is its interface
+                        if src is not None and (src.endswith(".py") or "." not in os.path.basename(src)):
+                            # a Python node installed as a program (``nodes/run_demo`` too, when its
+                            # first line says python: the interface store reads it): its code is
+                            # its interface
                             self.info.sources.setdefault(exe, [src])
         elif mode == "DIRECTORY":
             dirs: list[str] = []

@@ -285,3 +285,19 @@ def test_ament_python_install_package_installs_setup_cfg_scripts_to_its_destinat
     assert "spawner" not in info.executables  # not where ros2 run looks
     info = _cmake(tmp_path, "project(pkg)\nament_python_install_package(${PROJECT_NAME})\nament_package()\n")
     assert "spawner" not in info.executables  # without a destination no script is installed
+
+
+def test_cmake_files_installed_with_execute_permission_are_programs(tmp_path):
+    info = _cmake(tmp_path, """
+project(pkg)
+install(FILES scripts/service_node.py scripts/run_demo
+        DESTINATION lib/${PROJECT_NAME}
+        PERMISSIONS OWNER_EXECUTE OWNER_WRITE OWNER_READ GROUP_EXECUTE GROUP_READ)
+install(FILES scripts/helper.py DESTINATION lib/${PROJECT_NAME})
+install(PROGRAMS scripts/tool.sh DESTINATION lib/${PROJECT_NAME})
+""", ("scripts/service_node.py", "scripts/run_demo", "scripts/helper.py", "scripts/tool.sh"))
+    # a plain install(FILES) keeps mode 644: launch cannot run it
+    assert info.executables == {"service_node.py", "run_demo", "tool.sh"}
+    # Python code (by extension, or a script without one whose first line the store reads) is
+    # the interface's source; a shell script is not
+    assert sorted(info.sources) == ["run_demo", "service_node.py"]

@@ -29,3 +29,27 @@ def test_each_message_names_the_substitution_and_what_was_done_once(demo_finding
         'substitution LaunchConfiguration("dof") is converted with str() at description time',
         'substitution LaunchConfiguration("dof") is formatted with str.format at description time',
     ]
+
+
+PRINTED = """
+import logging
+from launch import LaunchDescription
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    dof = LaunchConfiguration("dof")
+    print(str(dof))
+    print(f"dof is {dof}")
+    logging.getLogger(__name__).info("dof: " + str(dof))
+    name = "arm_" + dof
+    return LaunchDescription([Node(package="demo_nodes_cpp", executable="talker", name=name)])
+"""
+
+
+def test_text_only_printed_or_logged_is_not_reported(demo_findings):
+    # a substitution's description on the terminal harms nothing; the same text in an action does
+    findings = demo_findings({"launch/a.launch.py": PRINTED}, "launch/a.launch.py", "L004")
+    assert [(line, message.split(":")[0]) for line, message in findings] == [
+        (13, 'substitution LaunchConfiguration("dof") is joined with + at description time')]

@@ -58,6 +58,18 @@ class ExpressionsMixin:
 
     def ex_Call(self, n: ast.Call, scope: Scope) -> Any:
         func = self.ev(n.func, scope)
+        if _output_only(n, func):
+            # print(str(lc)), logger.info(f"{lc}"): the text only goes to the terminal, where a
+            # substitution's description is harmless; it reaches no action
+            before = set(self.concats)
+            try:
+                return self._call(n, func, scope)
+            finally:
+                for key in [k for k in self.concats if k not in before]:
+                    del self.concats[key]
+        return self._call(n, func, scope)
+
+    def _call(self, n: ast.Call, func: Any, scope: Scope) -> Any:
         args: list[Any] = []
         arg_spans: list[Span] = []
         for a in n.args:
@@ -350,3 +362,15 @@ def _path_div(left: LObj, right: Any, span: Span) -> LObj | None:
     components = list(parts) if isinstance(parts, (list, tuple)) else [parts]
     qual = left.qual.rsplit(".", 1)[0] + ".PathJoinSubstitution"
     return LObj(qual, [components + [right]], {}, left.node, span, [span], {})
+
+
+# Methods of Python's and rclpy's loggers, and of files, that only write their text somewhere.
+_OUTPUT_METHODS = frozenset({"debug", "info", "warning", "warn", "error", "critical", "fatal", "exception",
+                             "write"})
+
+
+def _output_only(n: ast.Call, func: Any) -> bool:
+    """Whether the call only writes its arguments out: ``print(...)``, ``logger.info(...)``."""
+    if isinstance(func, Ref):
+        return func.qual == "builtins.print"
+    return isinstance(n.func, ast.Attribute) and n.func.attr in _OUTPUT_METHODS and isinstance(func, Opaque)

@@ -30,7 +30,8 @@ def fully_known(ctx: CheckContext, node: Any, params: dict[str, Any]) -> bool:
         if isinstance(src, UnknownParams):
             return False
         if isinstance(src, ResolvedParamFile) and src.status != "missing":
-            model = ctx.param_files.get(src.source or "") or ctx.param_files.get(src.path or "")
+            model = src.model if src.model is not None else (
+                ctx.param_files.get(src.source or "") or ctx.param_files.get(src.path or ""))
             if model is None or not model.ok:
                 return False
         if any(getattr(p, "value", 0) is None for p in getattr(src, "params", ())):

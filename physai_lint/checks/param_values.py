@@ -157,8 +157,12 @@ def undeclared(ctx: CheckContext) -> Iterator[Diagnostic]:
 # Nodes whose output does not depend on their own clock: static transforms, and the Gazebo
 # bridges, which copy each message's stamp from the other side (ros_gz_bridge convert_*_header);
 # one of them is usually the /clock source itself. The simulators' spawn tools put a model in the
-# world and exit (ros_gz_sim create.cpp, gazebo_ros spawn_entity.py).
+# world and exit (ros_gz_sim create.cpp, gazebo_ros spawn_entity.py). A component container's
+# own node only loads components, each with its own parameters (use_sim_time included).
 _TIME_AGNOSTIC = frozenset({("tf2_ros", "static_transform_publisher"),
+                            ("rclcpp_components", "component_container"),
+                            ("rclcpp_components", "component_container_mt"),
+                            ("rclcpp_components", "component_container_isolated"),
                             ("ros_gz_bridge", "parameter_bridge"), ("ros_ign_bridge", "parameter_bridge"),
                             ("ros_gz_image", "image_bridge"), ("ros_ign_image", "image_bridge"),
                             ("ros_gz_sim", "create"), ("ros_ign_gazebo", "create"),

@@ -100,20 +100,24 @@ def concatenation(ctx: CheckContext) -> Iterator[Diagnostic]:
 def substitution_tested(ctx: CheckContext) -> Iterator[Diagnostic]:
     for _path, facts in python_facts(ctx):
         for fact in facts.tested:
+            help_ = ("decide when the launch runs: give the actions condition=IfCondition(...) or "
+                     "LaunchConfigurationEquals(...), or read the value with .perform(context) in an "
+                     "OpaqueFunction")
             if fact.how == "truth":
                 message = (f"{fact.detail} is tested as a Python bool while the launch description is "
                            "built: a substitution is an object, and every object is true, so the launch "
                            "argument never decides this")
+            elif fact.how == "condition":
+                message = (f"{fact.detail} is tested as a Python bool while the launch description is "
+                           "built: a condition object is always true, so `and` gives the condition on its "
+                           "right and `or` this one; the other condition is never evaluated")
+                help_ = ("combine the values in one condition: IfCondition(AndSubstitution(a, "
+                         "NotSubstitution(b))), OrSubstitution, or IfCondition(PythonExpression([...]))")
             else:
                 always = "false" if fact.how == "equals" else "true"
                 message = (f"{fact.detail} compares the substitution object, not the value it names: it "
                            f"is always {always} while the launch description is built")
-            yield Diagnostic(
-                "L011", fact.span, message,
-                help="decide when the launch runs: give the actions condition=IfCondition(...) or "
-                     "LaunchConfigurationEquals(...), or read the value with .perform(context) in an "
-                     "OpaqueFunction",
-                key=f"{fact.how}:{fact.detail}")
+            yield Diagnostic("L011", fact.span, message, help=help_, key=f"{fact.how}:{fact.detail}")
 
 
 @rule("L012", "call-argument-mismatch")

@@ -351,7 +351,7 @@ class ConcatFact:
     ``os.path.join(FindPackageShare('p'), 'x')``, f-string of a substitution (``how``)."""
 
     how: Literal["plus", "os.path.join", "f-string", "format", "percent", "str", "join",
-                 "truth", "equals", "not-equals", "call"]
+                 "truth", "equals", "not-equals", "call", "condition"]
     span: Span
     detail: str
 

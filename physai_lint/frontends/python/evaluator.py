@@ -306,6 +306,8 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
         (always true: the argument it names decides nothing)."""
         if symbolic.is_subst(v):
             self.substitution_tested("truth", self.span(node, scope), v)
+        elif symbolic.is_condition(v):  # IfCondition(a) and UnlessCondition(b): b alone decides
+            self.substitution_tested("condition", self.span(node, scope), v)
         return truth(v)
 
     # ---- branches over values only known at launch time -------------------------------------

@@ -77,7 +77,10 @@ class Recorder:
         if key in self.tests:
             return
         shown = shown_subst(subst)
-        if how != "truth":
+        if how == "condition":
+            arg = subst.arg(0, "predicate_expression") if isinstance(subst, LObj) else None
+            shown = f"{_subst_name(subst)}({shown_subst(arg) if is_subst(arg) else '...'})"
+        elif how != "truth":
             shown += (" == " if how == "equals" else " != ") + \
                 (f'"{other}"' if isinstance(other, str) else shown_subst(other) if is_subst(other) else "...")
         self.tests[key] = ConcatFact(how, span, shown)  # type: ignore[arg-type]
@@ -113,6 +116,11 @@ def _shown(value: Any) -> str:
 
 def is_subst(v: Any) -> bool:
     return isinstance(v, LObj) and api.is_substitution(v.qual)
+
+
+def is_condition(v: Any) -> bool:
+    """A launch condition object (``IfCondition(...)``): like a substitution, always true in Python."""
+    return isinstance(v, LObj) and v.qual.startswith("launch.conditions.")
 
 
 def is_symstr(v: Any) -> bool:

@@ -1,0 +1,34 @@
+"""L011 for launch conditions combined with Python ``and``/``or``: a condition object is always
+true, so ``IfCondition(a) and UnlessCondition(b)`` is ``UnlessCondition(b)`` alone (UR's dual-robot
+tutorial: launch_dashboard_client:=false did nothing)."""
+from __future__ import annotations
+
+from typing import Any
+
+LAUNCH = """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.conditions import IfCondition, UnlessCondition
+from launch.substitutions import AndSubstitution, LaunchConfiguration, NotSubstitution
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    a = LaunchConfiguration("a")
+    b = LaunchConfiguration("b")
+    return LaunchDescription([
+        DeclareLaunchArgument("a", default_value="false"),
+        DeclareLaunchArgument("b", default_value="false"),
+        Node(package="demo_nodes_cpp", executable="talker", name="one",
+             condition=IfCondition(a) and UnlessCondition(b)),
+        Node(package="demo_nodes_cpp", executable="talker", name="two",
+             condition=IfCondition(AndSubstitution(a, NotSubstitution(b)))),
+    ])
+"""
+
+
+def test_conditions_joined_with_python_and_are_reported(demo_findings: Any) -> None:
+    found = demo_findings({"launch/c.launch.py": LAUNCH}, "launch/c.launch.py", "L011")
+    assert found == [(15, 'IfCondition(LaunchConfiguration("a")) is tested as a Python bool while the '
+                          "launch description is built: a condition object is always true, so `and` gives "
+                          "the condition on its right and `or` this one; the other condition is never "
+                          "evaluated")]

@@ -109,8 +109,9 @@ def substitution_tested(ctx: CheckContext) -> Iterator[Diagnostic]:
                            "argument never decides this")
             elif fact.how == "condition":
                 message = (f"{fact.detail} is tested as a Python bool while the launch description is "
-                           "built: a condition object is always true, so `and` gives the condition on its "
-                           "right and `or` this one; the other condition is never evaluated")
+                           "built: a condition object is always true (`if` always runs its body, `and` "
+                           "gives the condition on its right, `or` this one), so this condition never "
+                           "decides anything")
                 help_ = ("combine the values in one condition: IfCondition(AndSubstitution(a, "
                          "NotSubstitution(b))), OrSubstitution, or IfCondition(PythonExpression([...]))")
             else:

@@ -78,8 +78,7 @@ class Recorder:
             return
         shown = shown_subst(subst)
         if how == "condition":
-            arg = subst.arg(0, "predicate_expression") if isinstance(subst, LObj) else None
-            shown = f"{_subst_name(subst)}({shown_subst(arg) if is_subst(arg) else '...'})"
+            shown = shown_condition(subst)
         elif how != "truth":
             shown += (" == " if how == "equals" else " != ") + \
                 (f'"{other}"' if isinstance(other, str) else shown_subst(other) if is_subst(other) else "...")
@@ -121,6 +120,20 @@ def is_subst(v: Any) -> bool:
 def is_condition(v: Any) -> bool:
     """A launch condition object (``IfCondition(...)``): like a substitution, always true in Python."""
     return isinstance(v, LObj) and v.qual.startswith("launch.conditions.")
+
+
+def shown_condition(v: Any) -> str:
+    """``IfCondition(LaunchConfiguration("x"))``, ``LaunchConfigurationEquals("mode", "sim")``."""
+    name = _subst_name(v)
+    if name in ("LaunchConfigurationEquals", "LaunchConfigurationNotEquals"):
+        parts = [v.arg(0, "launch_configuration_name"), v.arg(1, "expected_value")]
+        return f"{name}({', '.join(repr_text(p) for p in parts)})"
+    arg = v.arg(0, "predicate_expression") if isinstance(v, LObj) else None
+    return f"{name}({shown_subst(arg) if is_subst(arg) else repr_text(arg)})"
+
+
+def repr_text(v: Any) -> str:
+    return f'"{v}"' if isinstance(v, str) else shown_subst(v) if is_subst(v) else "..."
 
 
 def is_symstr(v: Any) -> bool:

@@ -171,11 +171,15 @@ def only_named_launch(text: str) -> bool:
     return not defines_entry(text) and not _IMPORTS_LAUNCH.search(text)
 
 
-def defines_entry(text: str) -> bool:
+# launch_testing's entry point (``launch_test FILE``): checked when named on the command line.
+_DEFINES_TEST_ENTRY = re.compile(r"^(?:async[ \t]+)?def[ \t]+generate_test_description[ \t]*\(", re.MULTILINE)
+
+
+def defines_entry(text: str, pattern: re.Pattern[str] = _DEFINES_ENTRY) -> bool:
     """Whether Python ``text`` defines ``generate_launch_description`` at module level: a line
     starting with its ``def``, outside a triple-quoted string (the file's triple quotes before it
     pair up; a launch file generator writes one in its template)."""
-    for m in _DEFINES_ENTRY.finditer(text):
+    for m in pattern.finditer(text):
         before = text[: m.start()]
         if before.count('"""') % 2 == 0 and before.count("'''") % 2 == 0:
             return True
@@ -210,7 +214,8 @@ def classify(name: str, text: str | None, explicit: bool) -> Verdict:
             return Verdict(None, f"a ROS 1 (roslaunch) launch file ({marker} on line {line}), "
                                  "which ros2 launch cannot load")
         return Verdict("launch" if explicit or named or (gen.ros2 and xml_root(text) == "launch") else None)
-    if named or fmt == "yaml" or defines_entry(text) or (explicit and name.endswith(".launch")):
+    if named or fmt == "yaml" or defines_entry(text) or (explicit and name.endswith(".launch")) \
+            or (explicit and defines_entry(text, _DEFINES_TEST_ENTRY)):
         return Verdict("launch")
     if explicit:  # setup.py or a README among the changed files a script hands over
         return Verdict(None, "not a launch file: no launch frontend takes it, and as Python it defines "

@@ -4,7 +4,7 @@ from __future__ import annotations
 import functools
 from collections.abc import Iterator
 
-from physai_lint.checks._util import ir_objects
+from physai_lint.checks._util import ir_objects, python_facts
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic
 from physai_lint.model.span import Span
@@ -29,17 +29,21 @@ def _references(ctx: CheckContext) -> Iterator[tuple[str, Span, str]]:
 @rule("U103", "missing-exec-depend")
 def missing_exec_depend(ctx: CheckContext) -> Iterator[Diagnostic]:
     refs = sorted(set(_references(ctx)), key=lambda r: (r[2], r[1].line, r[1].col, r[0]))
-    reported: set[tuple[str, str]] = set()
+    reported: set[tuple[str, str, bool]] = set()
+    tests = {path for path, facts in python_facts(ctx) if facts.is_launch_test}
     for name, span, file in refs:
         owner = ctx.packages.package_of_source(span.file or file)
         if owner is None or not owner.valid or name == owner.name:
             continue
-        if (owner.name, name) in reported or not ctx.packages.has_package(name):
+        is_test = (span.file or file) in tests  # a launch test: its <test_depend>s count too
+        if (owner.name, name, is_test) in reported or not ctx.packages.has_package(name):
             continue
         declared = ctx.packages.exec_depends(owner.name)
         if name in declared or _through(ctx, declared, name):
             continue
-        reported.add((owner.name, name))
+        if is_test and name in getattr(ctx.packages, "test_depends", lambda _: ())(owner.name):
+            continue
+        reported.add((owner.name, name, is_test))
         excluded = getattr(ctx.packages, "excluded_depends", lambda _: {})(owner.name).get(name)
         if excluded is not None:
             why = (f'declares it only under the condition "{excluded}", which is false for '

@@ -69,6 +69,7 @@ class WorkspacePackage:
     installers: frozenset[str] = field(default_factory=frozenset)
     # run dependencies declared under a condition that is false for the distro: -> condition
     excluded_depends: dict[str, str] = field(default_factory=dict)
+    test_depends: frozenset[str] = frozenset()
 
 
 def _norm(path: str) -> str:
@@ -195,6 +196,11 @@ class PackageIndex:
     def exec_depends(self, package: str) -> dict[str, int]:
         pkg = self.packages.get(package)
         return dict(pkg.exec_depends) if pkg else {}
+
+    def test_depends(self, package: str) -> frozenset[str]:
+        """What a workspace package's tests may use: its <test_depend>s (run dependencies aside)."""
+        pkg = self.packages.get(package)
+        return pkg.test_depends if pkg else frozenset()
 
     def excluded_depends(self, package: str) -> dict[str, str]:
         """Run dependencies of a workspace package that its package.xml declares under a condition
@@ -823,6 +829,7 @@ def _read_package(index: PackageIndex, pkg_dir: str) -> WorkspacePackage | None:
         format=man.format,
         exec_depends=man.exec_depends,
         excluded_depends=man.excluded_depends,
+        test_depends=man.test_depends,
         executables=frozenset(info.executables),
         executables_in_bin=frozenset(info.executables_in_bin),
         scripts_dir=info.scripts_dir,

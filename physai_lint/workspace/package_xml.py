@@ -27,6 +27,9 @@ class ManifestInfo:
     error: tuple[str, int] | None = None  # (message, line) when catkin_pkg rejected it
     # run dependencies whose condition is false here (``$ROS_DISTRO != 'humble'``): -> condition
     excluded_depends: dict[str, str] = field(default_factory=dict)
+    # <test_depend> (and <depend>) names: what the package's tests may use besides its run
+    # dependencies (launch_testing files under test/)
+    test_depends: frozenset[str] = frozenset()
 
 
 def _line_of(text: str, pos: int) -> int:
@@ -222,7 +225,8 @@ def _parse_manifest(text: str, filename: str, distro: str) -> ManifestInfo:
     except Exception:  # noqa: BLE001 - InvalidPackage for several unconditional build types
         bt = _BUILD_TYPE_RX.search(text)
         build_type = bt.group(1) if bt else "catkin"
+    tests = frozenset(d.name for d in pkg.test_depends if getattr(d, "evaluated_condition", None) is not False)
     return ManifestInfo(
         name=pkg.name, build_type=build_type, format=int(pkg.package_format), exec_depends=deps,
-        excluded_depends={n: c for n, c in excluded.items() if n not in deps},
+        excluded_depends={n: c for n, c in excluded.items() if n not in deps}, test_depends=tests,
     )

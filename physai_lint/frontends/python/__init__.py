@@ -79,18 +79,28 @@ def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | N
         result = Opaque("the file is too deeply nested to evaluate", Span.whole_file(path))
     except Signal:  # stray return/break/raise at module level ends the module
         pass
-    gld = ev.main.scope.vars.get("generate_launch_description")
-    if has_gld and result is None:
+    # launch_testing's entry point when there is no generate_launch_description: `launch_test`
+    # calls it and starts the description it returns (alone, or first of a (description, dict))
+    entry = "generate_launch_description" if has_gld else "generate_test_description"
+    gld = ev.main.scope.vars.get(entry)
+    runs = has_gld or isinstance(gld, UserFunc) and any(
+        isinstance(n, (ast.FunctionDef, ast.AsyncFunctionDef)) and n.name == entry for n in tree.body)
+    if runs and result is None:
         if isinstance(gld, UserFunc):
             gld_span = spans.of(gld.node)
             try:
-                result = call_user(ev, gld, [], {}, gld_span)
+                # an old-style generate_test_description(ready_fn) gets a callable it cannot know
+                given = [Opaque(f"{a.arg}, given by launch_testing", gld_span)
+                         for a in gld.node.args.args[:len(gld.node.args.args) - len(gld.node.args.defaults)]]
+                result = call_user(ev, gld, given if not has_gld else [], {}, gld_span)
             except RecursionError:
                 result = Opaque("the file is too deeply nested to evaluate", gld_span)
+            if not has_gld and isinstance(result, tuple) and len(result) == 2 and isinstance(result[1], dict):
+                result = result[0]  # (LaunchDescription, the tests' context)
         else:
-            result = Opaque("generate_launch_description cannot be evaluated statically", Span.whole_file(path))
+            result = Opaque(f"{entry} cannot be evaluated statically", Span.whole_file(path))
     actions: tuple[Any, ...] = ()
-    if has_gld:
+    if runs:
         builder = ActionBuilder(ev)
         if isinstance(result, (LObj, list, tuple, Alternatives)):  # Alternatives before Opaque, its base
             try:
@@ -101,7 +111,7 @@ def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | N
             actions = (OpaqueAction("opaque@gld", result.span or Span.whole_file(path), None, result.reason),)
         else:
             actions = (OpaqueAction("opaque@gld", Span.whole_file(path), None,
-                                    "generate_launch_description does not return a LaunchDescription"),)
+                                    f"{entry} does not return a LaunchDescription"),)
     try:
         nodes = ast_nodes(tree)
         dead = ev.dead_lines(nodes)

@@ -215,6 +215,8 @@ class ActionBuilder:
             return self._emit(o, i, s, cond)
         if n == "LogInfo":
             return L.Log(i, s, cond, self._v(o, -1, "msg"))
+        if n == "ReadyToTest":  # launch_testing: the tests may start; nothing is launched
+            return L.Log(i, s, cond, ())
         if n in _ENV_OPS:
             return L.SetEnvironment(i, s, cond, _ENV_OPS[n], opt_value(o, 0, "name"), opt_value(o, 1, "value"))  # type: ignore[arg-type]
         if n == "Shutdown":

@@ -40,6 +40,8 @@ _CALLS = {
     "create_client": ("clients", 0, 1, "srv_type", "srv_name"),
     "ActionServer": ("action_servers", 1, 2, "action_type", "action_name"),
     "ActionClient": ("action_clients", 1, 2, "action_type", "action_name"),
+    # message_filters.Subscriber(node, msg_type, topic, qos_profile=...) subscribes right away
+    "Subscriber": ("subscribers", 1, 2, "msg_type", "topic"),
 }
 
 _PARAM_TYPE_NAMES = {
@@ -47,6 +49,14 @@ _PARAM_TYPE_NAMES = {
     "BOOL_ARRAY": "bool_array", "INTEGER_ARRAY": "integer_array",
     "DOUBLE_ARRAY": "double_array", "STRING_ARRAY": "string_array", "BYTE_ARRAY": "byte_array",
 }
+
+
+def _from_message_filters(fn: ast.expr, imports: dict[str, str]) -> bool:
+    """``message_filters.Subscriber`` / ``mf.Subscriber`` / ``Subscriber`` imported from it."""
+    if isinstance(fn, ast.Name):
+        return imports.get(fn.id, "").startswith("message_filters.")
+    return isinstance(fn, ast.Attribute) and isinstance(fn.value, ast.Name) \
+        and imports.get(fn.value.id, fn.value.id).split(".")[0] == "message_filters"
 
 
 def _imports(nodes: list[ast.AST]) -> dict[str, str]:
@@ -470,7 +480,10 @@ def _extract_one(path: str, tree: ast.Module, iface: NodeInterface, nodes: list[
             else None
         if fname in _CALLS:
             kind, tpos, npos, tkw, nkw = _CALLS[fname]
-            if fname in ("ActionServer", "ActionClient"):
+            if fname == "Subscriber":
+                if not _from_message_filters(fn, imports):
+                    continue
+            elif fname in ("ActionServer", "ActionClient"):
                 pass
             elif not isinstance(fn, ast.Attribute):
                 continue

@@ -137,3 +137,30 @@ def test_a_message_filters_subscription_is_a_subscriber(demo_findings: Any) -> N
     assert [m for _, m in demo_findings(files, "launch/pair.launch.xml", "T202")] == [
         ('/talker publishes "/acceleration/filtred" but nothing subscribes to it '
          '(did you mean "/acceleration/filtered"?)')]
+
+
+PY_NODE = """import message_filters
+import message_filters as mf
+from message_filters import Subscriber
+from rclpy.node import Node
+from sensor_msgs.msg import CameraInfo, Image
+from vision_msgs.msg import Detection2DArray
+
+
+class Overlay(Node):
+    def __init__(self):
+        super().__init__('overlay')
+        self.image = message_filters.Subscriber(self, Image, 'image_rect')
+        self.info = mf.Subscriber(self, CameraInfo, 'camera_info', qos_profile=10)
+        self.dets = Subscriber(self, Detection2DArray, topic=self.get_parameter('t').value)
+        self.other = SomethingElse.Subscriber(self, Image, 'not_a_topic')
+"""
+
+
+def test_python_message_filters_subscribers_are_subscriptions() -> None:
+    from physai_lint.interfaces.extract_py import extract_py
+
+    iface = extract_py([("/ws/src/demo/demo/overlay.py", PY_NODE)])
+    assert [(e.name, e.type) for e in iface.endpoints("subscribers")] == [
+        ("image_rect", "sensor_msgs/msg/Image"), ("camera_info", "sensor_msgs/msg/CameraInfo")]
+    assert iface.unnamed == [("subscribers", "vision_msgs/msg/Detection2DArray")]

@@ -165,6 +165,17 @@ def _wrong_type_text(f: TypeFact) -> tuple[str, str]:
                    "TypeError ('>' or '<' not supported)")
         example = "respawn_delay=2.0" if name == "respawn_delay" else "respawn_max_retries=3"
         return message, f"pass a number, e.g. {example}; a launch argument cannot set it"
+    if f.kind == "entities":
+        if f.type == "string":
+            when = ("when the process starts launch builds its OnProcessExit handler from it and raises "
+                    "\"TypeError: expected all items in 'on_event' iterable to be of type "
+                    "'LaunchDescriptionEntity'\"")
+        else:
+            when = ("when the process exits launch gets it back from its OnProcessExit handler and raises "
+                    "\"RuntimeError: expected a LaunchDescriptionEntity from event_handler\"")
+        message = f"{f.call} is given {f.value}, a {f.type}, where launch wants actions to run: {when}"
+        return message, ("pass an action or a list of actions (on_exit=Shutdown(), on_exit=[LogInfo(...)]); "
+                         "to choose at launch time, give those actions a condition")
     if f.kind == "pairs":
         message = (f"{f.call} is given a dict ({f.value}): launch iterates it as (name, value) pairs "
                    "and gets only its keys, so the include fails with \"ValueError: too many values "

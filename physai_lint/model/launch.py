@@ -334,11 +334,12 @@ class TypeFact:
     substitutions; "pairs", a dict where launch iterates (name, value) pairs (``launch_arguments``);
     "remap", a remap rule that is not a tuple (a list, or a dict's key); "plain-bool" and
     "plain-number", a string or substitution where launch uses the value as is (``shell``,
-    ``respawn_delay``). ``call`` names the
+    ``respawn_delay``); "entities", a string, number or substitution where launch wants actions
+    (``on_exit``). ``call`` names the
     argument as written (``DeclareLaunchArgument(default_value=...)``), ``value`` is the Python
     value's repr (shortened) and ``type`` its type's name."""
 
-    kind: Literal["text", "pairs", "remap", "plain-bool", "plain-number"]
+    kind: Literal["text", "pairs", "remap", "plain-bool", "plain-number", "entities"]
     call: str
     value: str
     type: str

@@ -69,6 +69,9 @@ _OTHER_ARGS = ("output", "respawn", "prefix", "cwd", "sigterm_timeout", "sigkill
 # true, or fails a comparison with a number when the process exits and is respawned.
 _PROCESS_PLAIN = (("respawn_delay", "number"), ("respawn_max_retries", "number"),
                   ("emulate_tty", "bool"), ("shell", "bool"))
+# Actions whose on_exit= takes actions (or a function returning them): launch wraps it in an
+# OnProcessExit (launch ExecuteProcess.execute, event_handlers/on_action_event_base.py).
+_PROCESS_ACTIONS = frozenset({"ExecuteProcess", "Node", "LifecycleNode", "ComposableNodeContainer"})
 _PLAIN_ARGS: dict[str, tuple[tuple[str, str], ...]] = {
     **{n: _PROCESS_PLAIN for n in ("Node", "LifecycleNode", "ComposableNodeContainer",
                                     "ExecuteProcess", "ExecuteLocal")},
@@ -255,6 +258,10 @@ class ActionBuilder:
             if want == "bool" and isinstance(v, str) and v.strip().lower() in _TRUE_WORDS:
                 continue  # emulate_tty='True': on, as written (only a false-looking one misleads)
             self.ev.wrong_type(f"plain-{want}", f"{n}({name}=...)", v, o.arg_span(-1, name))  # type: ignore[arg-type]
+        if n in _PROCESS_ACTIONS:
+            v = o.arg(-1, "on_exit")
+            if isinstance(v, (str, bool, int, float)) or (isinstance(v, LObj) and api.is_substitution(v.qual)):
+                self.ev.wrong_type("entities", f"{n}(on_exit=...)", v, o.arg_span(-1, "on_exit"))
         if n == "GroupAction":
             lcs = o.arg(-1, "launch_configurations")
             if isinstance(lcs, dict):

@@ -97,10 +97,15 @@ def materialise(example: Example, root: Path) -> tuple[str, list[str]]:
     launch_texts = "\n".join(t for p, t in files.items() if p.endswith(_LAUNCH_SUFFIXES))
     referenced = sorted({m for rx in _PKG_REFS for m in rx.findall(launch_texts)})
     packages = sorted({p.split("/")[1] for p in files if p.startswith("src/") and p.count("/") >= 2})
+    # an author declares what exists (a workspace or released package), not a misspelt name: a
+    # declared run dependency is taken as installed from elsewhere (U101 stays silent on it)
+    from physai_lint.workspace.distro import released_in
+
+    existing = [r for r in referenced if r in packages or released_in(r)]
     for pkg in packages:
         prefix = f"src/{pkg}/"
         if prefix + "package.xml" not in files:
-            files[prefix + "package.xml"] = _package_xml(pkg, [r for r in referenced if r != pkg])
+            files[prefix + "package.xml"] = _package_xml(pkg, [r for r in existing if r != pkg])
         if not any(prefix + b in files for b in ("CMakeLists.txt", "setup.py")):
             dirs = sorted({p[len(prefix):].split("/")[0] for p in files if p.startswith(prefix)} & set(_INSTALLED_DIRS))
             files[prefix + "CMakeLists.txt"] = _cmakelists(pkg, dirs)

@@ -156,8 +156,13 @@ class Verdict:
     reason: str = ""
 
 
+def _def_of(name: str) -> re.Pattern[str]:
+    """A module-level ``def <name>(`` line."""
+    return re.compile(rf"^(?:async[ \t]+)?def[ \t]+{name}[ \t]*\(", re.MULTILINE)
+
+
 # A module-level ``def generate_launch_description(`` (not one a code generator writes in a string).
-_DEFINES_ENTRY = re.compile(r"^(?:async[ \t]+)?def[ \t]+generate_launch_description[ \t]*\(", re.MULTILINE)
+_DEFINES_ENTRY = _def_of("generate_launch_description")
 
 
 # ``import launch``, ``from launch_ros.actions import Node``, ``from launch import ...``
@@ -172,11 +177,12 @@ def only_named_launch(text: str) -> bool:
 
 
 # launch_testing's entry point (``launch_test FILE``): checked when named on the command line.
-_DEFINES_TEST_ENTRY = re.compile(r"^(?:async[ \t]+)?def[ \t]+generate_test_description[ \t]*\(", re.MULTILINE)
+_DEFINES_TEST_ENTRY = _def_of("generate_test_description")
 
 
 def defines_entry(text: str, pattern: re.Pattern[str] = _DEFINES_ENTRY) -> bool:
-    """Whether Python ``text`` defines ``generate_launch_description`` at module level: a line
+    """Whether Python ``text`` defines ``generate_launch_description`` (or the entry point
+    ``pattern`` matches) at module level: a line
     starting with its ``def``, outside a triple-quoted string (the file's triple quotes before it
     pair up; a launch file generator writes one in its template)."""
     for m in pattern.finditer(text):

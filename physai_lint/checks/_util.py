@@ -11,6 +11,9 @@ from physai_lint.model.fields import ATOMS, POSITION_FIELDS, field_names
 from physai_lint.model.launch import PythonFacts
 from physai_lint.resolve.model import LaunchResult, NodeInstance
 
+# rclcpp_components' container executables (ComposableNodeContainer's usual ones).
+CONTAINER_EXECUTABLES = ("component_container", "component_container_mt", "component_container_isolated")
+
 
 def command_words(proc: NodeInstance) -> list[str | None] | None:
     """A process's command line split like a shell would (``["ros2 param set /x a 1"]`` with

@@ -6,7 +6,7 @@ from collections.abc import Iterator
 from typing import Any
 
 from physai_lint.checks._params import effective
-from physai_lint.checks._util import command_words, did_you_mean, where
+from physai_lint.checks._util import CONTAINER_EXECUTABLES, command_words, did_you_mean, where
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic, Related
 from physai_lint.resolve.model import LaunchResult, NodeInstance, ResolvedParamDict
@@ -123,12 +123,9 @@ def _set_by_command(launch: LaunchResult) -> set[str | None]:
     return out
 
 
-_CONTAINER_EXECUTABLES = ("component_container", "component_container_mt", "component_container_isolated")
-
-
 def _is_container(node: NodeInstance) -> bool:
     return node.kind == "container" or (
-        node.kind == "node" and node.package == "rclcpp_components" and node.executable in _CONTAINER_EXECUTABLES)
+        node.kind == "node" and node.package == "rclcpp_components" and node.executable in CONTAINER_EXECUTABLES)
 
 
 @rule("S203", "container-not-launched")

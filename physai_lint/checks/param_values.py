@@ -7,7 +7,7 @@ from typing import Any
 
 from physai_lint.checks._params import decl_source as _source
 from physai_lint.checks._params import effective, fully_known, interface, nodes_with_params
-from physai_lint.checks._util import did_you_mean, where
+from physai_lint.checks._util import CONTAINER_EXECUTABLES, did_you_mean, where
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic, Related
 
@@ -160,9 +160,7 @@ def undeclared(ctx: CheckContext) -> Iterator[Diagnostic]:
 # world and exit (ros_gz_sim create.cpp, gazebo_ros spawn_entity.py). A component container's
 # own node only loads components, each with its own parameters (use_sim_time included).
 _TIME_AGNOSTIC = frozenset({("tf2_ros", "static_transform_publisher"),
-                            ("rclcpp_components", "component_container"),
-                            ("rclcpp_components", "component_container_mt"),
-                            ("rclcpp_components", "component_container_isolated"),
+                            *(("rclcpp_components", exe) for exe in CONTAINER_EXECUTABLES),
                             ("ros_gz_bridge", "parameter_bridge"), ("ros_ign_bridge", "parameter_bridge"),
                             ("ros_gz_image", "image_bridge"), ("ros_ign_image", "image_bridge"),
                             ("ros_gz_sim", "create"), ("ros_ign_gazebo", "create"),

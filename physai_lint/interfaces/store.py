@@ -266,10 +266,9 @@ def merge(layers: Iterable[NodeInterface]) -> NodeInterface | None:
                 setattr(out, kind, list(v))
                 chosen = layer
                 break
-        if chosen is None and any(not x.source.startswith("extracted") and x.unnamed for x in layers):
-            # no list of this kind anywhere: every layer's endpoints named only at run time
+        if chosen is None:  # no list of this kind anywhere: every layer's endpoints named at run time
             out.unnamed.extend(u for layer in layers for u in layer.unnamed if u[0] == kind)
-        elif chosen is None or chosen.source.startswith("extracted"):  # the code's word on this kind
+        elif chosen.source.startswith("extracted"):  # the code's word on this kind
             out.unnamed.extend(u for layer in layers if layer.source.startswith("extracted")
                                for u in layer.unnamed if u[0] == kind)
         else:  # a declaration's: those of its endpoints named only at run time

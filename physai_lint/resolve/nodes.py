@@ -331,11 +331,12 @@ class NodeBuilder:
             if file in opaque_files:
                 continue
             if seen == "never":
-                res.never_started.append((h.span, f"the target action of its {_EVENT_CLASS.get(h.event, h.event)} is never "
-                                                  "added to the launch description"))
+                why = "never added to the launch description"
             elif seen is False:
-                res.never_started.append((h.span, f"the target action of its {_EVENT_CLASS.get(h.event, h.event)} is "
-                                                  "disabled by its condition"))
+                why = "disabled by its condition"
+            else:
+                continue
+            res.never_started.append((h.span, f"the target action of its {_EVENT_CLASS.get(h.event, h.event)} is {why}"))
 
 
 # The handler classes behind ``EventHandler.event`` (launch.event_handlers, launch_ros's

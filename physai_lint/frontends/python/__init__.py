@@ -69,8 +69,11 @@ def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | N
     convert_values.set_recorder(ev)
     spans = ev.main.spans
     result: Any = None
-    has_gld = any(isinstance(n, (ast.FunctionDef, ast.AsyncFunctionDef)) and n.name == "generate_launch_description"
-                  for n in tree.body)
+    defined = {n.name for n in tree.body if isinstance(n, (ast.FunctionDef, ast.AsyncFunctionDef))}
+    has_gld = "generate_launch_description" in defined
+    # launch_testing's entry point when there is no generate_launch_description: `launch_test`
+    # calls it and starts the description it returns (alone, or first of a (description, dict))
+    has_gtd = not has_gld and "generate_test_description" in defined
     try:
         ev.exec_block(tree.body, ev.main.scope)
     except Abort as e:
@@ -79,23 +82,20 @@ def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | N
         result = Opaque("the file is too deeply nested to evaluate", Span.whole_file(path))
     except Signal:  # stray return/break/raise at module level ends the module
         pass
-    # launch_testing's entry point when there is no generate_launch_description: `launch_test`
-    # calls it and starts the description it returns (alone, or first of a (description, dict))
-    entry = "generate_launch_description" if has_gld else "generate_test_description"
+    entry = "generate_test_description" if has_gtd else "generate_launch_description"
     gld = ev.main.scope.vars.get(entry)
-    runs = has_gld or isinstance(gld, UserFunc) and any(
-        isinstance(n, (ast.FunctionDef, ast.AsyncFunctionDef)) and n.name == entry for n in tree.body)
+    runs = has_gld or (has_gtd and isinstance(gld, UserFunc))
     if runs and result is None:
         if isinstance(gld, UserFunc):
             gld_span = spans.of(gld.node)
+            # an old-style generate_test_description(ready_fn) gets a callable it cannot know
+            required = gld.node.args.args[:len(gld.node.args.args) - len(gld.node.args.defaults)]
+            given = [Opaque(f"{a.arg}, given by launch_testing", gld_span) for a in required] if has_gtd else []
             try:
-                # an old-style generate_test_description(ready_fn) gets a callable it cannot know
-                given = [Opaque(f"{a.arg}, given by launch_testing", gld_span)
-                         for a in gld.node.args.args[:len(gld.node.args.args) - len(gld.node.args.defaults)]]
-                result = call_user(ev, gld, given if not has_gld else [], {}, gld_span)
+                result = call_user(ev, gld, given, {}, gld_span)
             except RecursionError:
                 result = Opaque("the file is too deeply nested to evaluate", gld_span)
-            if not has_gld and isinstance(result, tuple) and len(result) == 2 and isinstance(result[1], dict):
+            if has_gtd and isinstance(result, tuple) and len(result) == 2 and isinstance(result[1], dict):
                 result = result[0]  # (LaunchDescription, the tests' context)
         else:
             result = Opaque(f"{entry} cannot be evaluated statically", Span.whole_file(path))
@@ -122,8 +122,8 @@ def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | N
     concats = tuple(sorted(ev.concats.values(), key=lambda c: (c.span.line, c.span.col, c.how)))
     # launch_testing files (`launch_test FILE`) define generate_test_description instead, and
     # launch_pytest modules (run by pytest) give their descriptions through @launch_pytest.fixture.
-    is_test = any(isinstance(n, (ast.FunctionDef, ast.AsyncFunctionDef)) and n.name == "generate_test_description"
-                  or isinstance(n, ast.Import) and any(a.name.split(".")[0] == "launch_pytest" for a in n.names)
+    is_test = "generate_test_description" in defined or any(
+                  isinstance(n, ast.Import) and any(a.name.split(".")[0] == "launch_pytest" for a in n.names)
                   or isinstance(n, ast.ImportFrom) and (n.module or "").split(".")[0] == "launch_pytest"
                   for n in tree.body)
     wrong = tuple(sorted(ev.wrong_types.values(), key=lambda f: (f.span.line, f.span.col, f.call)))

@@ -76,12 +76,12 @@ class Recorder:
         key = (how, span)
         if key in self.tests:
             return
-        shown = shown_subst(subst)
         if how == "condition":
             shown = shown_condition(subst)
-        elif how != "truth":
-            shown += (" == " if how == "equals" else " != ") + \
-                (f'"{other}"' if isinstance(other, str) else shown_subst(other) if is_subst(other) else "...")
+        else:
+            shown = shown_subst(subst)
+            if how != "truth":
+                shown += (" == " if how == "equals" else " != ") + repr_text(other)
         self.tests[key] = ConcatFact(how, span, shown)  # type: ignore[arg-type]
 
     def wrong_type(self, kind: str, call: str, value: Any, span: Span) -> None:
@@ -129,10 +129,11 @@ def shown_condition(v: Any) -> str:
         parts = [v.arg(0, "launch_configuration_name"), v.arg(1, "expected_value")]
         return f"{name}({', '.join(repr_text(p) for p in parts)})"
     arg = v.arg(0, "predicate_expression") if isinstance(v, LObj) else None
-    return f"{name}({shown_subst(arg) if is_subst(arg) else repr_text(arg)})"
+    return f"{name}({repr_text(arg)})"
 
 
 def repr_text(v: Any) -> str:
+    """A string quoted, a substitution as ``shown_subst`` shows it, anything else as ``...``."""
     return f'"{v}"' if isinstance(v, str) else shown_subst(v) if is_subst(v) else "..."
 
 

@@ -50,10 +50,10 @@ def entry() -> NoReturn:
     the runs), for nothing. Like mypy's default ``--fast-exit``, flush the standard streams and
     ``os._exit``. ``main`` itself stays a function that returns, for callers in a process that
     lives on."""
-    from physai_lint import gcpolicy
+    from physai_lint import datastack, gcpolicy
 
     gcpolicy.ending_process()  # and no collector restored for it: the run's objects go with it
-    code = main()
+    code = datastack.call(main)  # its frames in one chunk of the frame stack (datastack.py)
     for stream in (sys.stdout, sys.stderr):
         try:
             stream.flush()

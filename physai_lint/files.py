@@ -13,6 +13,7 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 from typing import Any
 
+from physai_lint.bounded_read import read_at_most
 from physai_lint.model.findings import Diagnostic
 from physai_lint.model.launch import LaunchFile
 from physai_lint.model.span import Span
@@ -67,7 +68,7 @@ class FileStore:
                 fail(path, span, f"file is {_size(size)}, larger than the {_size(self.max_bytes)} limit")
                 return None
             with open(path, "rb") as fh:
-                data = fh.read(self.max_bytes + 1)
+                data = read_at_most(fh, self.max_bytes)
         except OSError as exc:
             fail(path, span, f"cannot read file: {exc.strerror or exc}")
             return None

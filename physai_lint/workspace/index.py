@@ -13,6 +13,8 @@ from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 from typing import Any, Literal
 
+from physai_lint.bounded_read import read_at_most
+
 from ._glob import compile_glob
 from ._model import BuildInfo, InstallRule
 from .cmake import read_cmake_package, read_listfile
@@ -479,7 +481,7 @@ def read_text_file(path: str) -> str | None:
         if os.path.getsize(path) > READ_LIMIT:
             return None
         with open(path, "rb") as fh:
-            data = fh.read(READ_LIMIT + 1)
+            data = read_at_most(fh, READ_LIMIT)
     except OSError:
         return None
     if len(data) > READ_LIMIT or b"\x00" in data:

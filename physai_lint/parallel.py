@@ -247,9 +247,9 @@ SHARED_MEMOS: tuple[tuple[int, tuple[str, ...]], ...] = (
     (80, ("P105", "P107", "P108", "P109", "P111", "P112")),  # effective parameters
     (45, ("L114", "U104")),  # every model object of each launch file (checks._util.ir_objects)
 )
-# Rules that ask those memos about a few nodes only (lifecycle managers, the target of a
+# Rules that ask those memos about a few nodes only (lifecycle and controller managers, the target of a
 # "ros2 param" command): they compute these few wherever they run.
-LIGHT_MEMO_USERS = frozenset({"P110", "S101", "S201", "S202"})
+LIGHT_MEMO_USERS = frozenset({"P110", "S101", "S201", "S202", "S204"})
 
 # A static cost per rule: about its milliseconds on the real-workspace benchmark (1,180 files,
 # interfaces prefetched, medians of four -j2 runs; S101 imports networkx only for a launch whose

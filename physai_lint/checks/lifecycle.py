@@ -1,5 +1,5 @@
 """Lifecycle managers and containers: S201 lifecycle-node-not-launched, S202 lifecycle-node-unmanaged,
-S203 container-not-launched."""
+S203 container-not-launched, S204 controller-type-not-set."""
 from __future__ import annotations
 
 from collections.abc import Iterator
@@ -152,3 +152,128 @@ def container_not_launched(ctx: CheckContext) -> Iterator[Diagnostic]:
                 f"which this launch never starts{hint}",
                 help="start the container (ComposableNodeContainer) or fix target_container",
                 key=node.container)
+
+
+# ---- S204: controllers spawned without a type ---------------------------------------------------
+
+CONTROLLER_MANAGERS = {("controller_manager", "ros2_control_node")}
+_CONTROLLER_SPAWNERS = frozenset({"spawner", "spawner.py"})
+# Options of the spawner (controller_manager/spawner.py, humble to rolling) and of
+# ``ros2 control load_controller`` (ros2controlcli/verb/load_controller.py) that take a value.
+_VALUE_OPTIONS = frozenset({"-c", "--controller-manager", "--controller-manager-timeout", "--switch-timeout",
+                            "--service-call-timeout", "--controller-ros-args", "--set-state", "--state",
+                            "--spin-time"})
+# Options that give the controller its type another way (a type, a parameter file that may carry
+# it: jazzy's spawner reads "type" from it, a namespace that moves the controller manager, or
+# per-controller options): the controller manager's own parameters no longer decide.
+_TYPE_ELSEWHERE = frozenset({"-t", "--controller-type", "-p", "--param-file", "-n", "--namespace",
+                             "--controller", "--params-file", "--fallback_controllers"})
+
+
+def _loads(node: NodeInstance) -> tuple[list[str], str] | None:
+    """(controller names, controller manager FQN) of a spawner, or of a ``ros2 control
+    load_controller`` process; None when a word that matters is not known, or when the type may
+    come from elsewhere (``_TYPE_ELSEWHERE``)."""
+    if node.package == "controller_manager" and node.executable in _CONTROLLER_SPAWNERS:
+        # Launch passes the spawner's parameters as --params-file, where jazzy's spawner looks for
+        # a "type" (get_parameter_from_param_files): a file may give one; a dict only if it sets "type".
+        if any(not isinstance(s, ResolvedParamDict) or any(p.name == "type" for p in s.params)
+               for s in node.param_sources):
+            return None
+        words: list[str | None] = list(node.arguments)
+        namespace = node.namespace  # a relative controller manager name is the spawner's namespace's
+    elif node.kind == "process":
+        all_words = command_words(node) or []
+        for i in range(len(all_words) - 2):
+            if all_words[i] == "control" and all_words[i + 1] == "load_controller" and \
+                    (all_words[i - 1] or "").rsplit("/", 1)[-1] == "ros2":
+                words, namespace = all_words[i + 2:], "/"  # the ros2 command's node is in /
+                break
+        else:
+            return None
+    else:
+        return None
+    names: list[str] = []
+    manager: str | None = "controller_manager"
+    pending: str | None = None  # the option whose value comes next
+    for i, w in enumerate(words):
+        if w is None:
+            return None
+        if pending is not None:
+            manager = w if pending in ("-c", "--controller-manager") else manager
+            pending = None
+            continue
+        if w == "--ros-args":  # ROS arguments from here on; a --params-file among them may type it
+            if "--params-file" in words[i:]:
+                return None
+            break
+        option, eq, value = w.partition("=")
+        if option in _TYPE_ELSEWHERE:
+            return None
+        if w.startswith("-"):
+            if option in _VALUE_OPTIONS:
+                if eq:
+                    manager = value if option in ("-c", "--controller-manager") else manager
+                else:
+                    pending = option
+            continue
+        names.append(w)
+    if pending is not None or not names or not manager:
+        return None
+    if not manager.startswith("/"):
+        if namespace is None:
+            return None
+        manager = namespace.rstrip("/") + "/" + manager
+    return names, manager
+
+
+@rule("S204", "controller-type-not-set")
+def controller_type_not_set(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for launch in ctx.launches:
+        cms = [n for n in launch.nodes if (n.package, n.executable) in CONTROLLER_MANAGERS and n.active is not False]
+        if not cms or launch.opaque or any(n.fqn is None for n in cms):
+            continue
+        for node in launch.nodes:
+            if node.active is False:
+                continue
+            loads = _loads(node)
+            if loads is None:
+                continue
+            names, manager = loads
+            for cm in cms:
+                if cm.fqn != manager:
+                    continue
+                params = effective(ctx, cm)
+                if not _all_sources_read(ctx, cm, params):
+                    continue
+                configured = sorted({k[:-len(".type")] for k in params if k.endswith(".type")})
+                for name in names:
+                    if f"{name}.type" in params or (node.span, cm.fqn, name) in seen:
+                        continue
+                    seen.add((node.span, cm.fqn, name))
+                    close = did_you_mean(name, configured)
+                    has = f"it configures {', '.join(configured)}" if configured else "it configures no controller"
+                    if close:
+                        has += ": did you mean " + " or ".join(f'"{c}"' for c in close) + "?"
+                    yield Diagnostic(
+                        "S204", node.spans.get("arguments", node.span),
+                        f'{"spawner" if node.kind != "process" else "ros2 control load_controller"} loads '
+                        f'controller "{name}" but controller manager {cm.fqn} has no parameter '
+                        f'"{name}.type", so loading fails ("The \'type\' param was not defined for '
+                        f"'{name}'\"); {has}",
+                        help=f'give the controller manager "{name}: type: <package>/<Class>" under its '
+                             "ros__parameters" + (", or pass the type to the spawner (--controller-type)"
+                                                  if node.kind != "process" else ""),
+                        related=(Related(cm.span, "the controller manager"),), key=f"{cm.fqn} {name}")
+
+
+def _all_sources_read(ctx: CheckContext, node: NodeInstance, params: dict[str, Any]) -> bool:
+    """Every parameter source of the controller manager is known and read (a missing file is
+    P101's: the types it would have given are not reported again here)."""
+    from physai_lint.checks._params import fully_known
+    from physai_lint.resolve.model import ResolvedParamFile
+
+    if any(isinstance(s, ResolvedParamFile) and s.status == "missing" for s in node.param_sources):
+        return False
+    return fully_known(ctx, node, params)

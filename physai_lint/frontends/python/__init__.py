@@ -69,7 +69,7 @@ def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | N
     convert_values.set_recorder(ev)
     spans = ev.main.spans
     result: Any = None
-    defined = {n.name for n in tree.body if isinstance(n, (ast.FunctionDef, ast.AsyncFunctionDef))}
+    defined = _module_functions(tree.body)
     has_gld = "generate_launch_description" in defined
     # launch_testing's entry point when there is no generate_launch_description: `launch_test`
     # calls it and starts the description it returns (alone, or first of a (description, dict))
@@ -134,6 +134,29 @@ def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | N
     launch = LaunchFile(path, "python", actions, python=facts, read_files=tuple(ev.read_files))
     convert_values.set_recorder(None)
     return FrontendResult(launch=launch, diagnostics=[])
+
+
+def _module_functions(body: list[ast.stmt]) -> set[str]:
+    """The functions a module defines, also inside its module-level ``if``/``try``/``with``/loop
+    blocks (``try: ... def generate_test_description(): ... except ImportError: ...``): launch
+    only asks ``hasattr(module, 'generate_launch_description')``. Not those of classes or
+    functions."""
+    out: set[str] = set()
+    stack = list(body)
+    while stack:
+        n = stack.pop()
+        if isinstance(n, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            out.add(n.name)
+        elif isinstance(n, (ast.If, ast.For, ast.AsyncFor, ast.While, ast.With, ast.AsyncWith)):
+            stack.extend([*n.body, *getattr(n, "orelse", ())])
+        elif isinstance(n, ast.Try) or type(n).__name__ == "TryStar":
+            stack.extend([*n.body, *n.orelse, *n.finalbody])  # type: ignore[attr-defined]
+            for h in n.handlers:  # type: ignore[attr-defined]
+                stack.extend(h.body)
+        elif type(n).__name__ == "Match":
+            for case in n.cases:  # type: ignore[attr-defined]
+                stack.extend(case.body)
+    return out
 
 
 def _within(span: Span, ranges: list[tuple[int, int]]) -> bool:

@@ -41,6 +41,20 @@ __all__ = ["BUILTIN_NAMES", "MAX_DEPTH", "Abort", "Evaluator", "ModuleCtx", "Sco
 
 
 
+# What an API of another distro raises (a keyword argument, a module or a name that is not
+# there): the handlers of a ``try`` that catches only these are that distro's fallback.
+_COMPAT_ERRORS = frozenset({"TypeError", "ImportError", "ModuleNotFoundError", "AttributeError", "NameError"})
+
+
+def _catches_only(handler: ast.ExceptHandler, names: frozenset[str]) -> bool:
+    """The handler names its exception classes, all of them among ``names``."""
+    t = handler.type
+    types = t.elts if isinstance(t, ast.Tuple) else [t] if t is not None else []
+    return bool(types) and all(
+        (x.id if isinstance(x, ast.Name) else x.attr if isinstance(x, ast.Attribute) else None) in names
+        for x in types)
+
+
 class Evaluator(ExpressionsMixin, symbolic.Recorder):
     def __init__(self, path: str, text: str, read_file: Callable[[str], str | None] | None,
                  distro: str | None = None) -> None:
@@ -59,6 +73,7 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
         self.pending: list[list[tuple[Any, tuple[CondTag, CondTag]]]] = []
         # per ``if`` statement run: the outcomes of its test ({True, False} when undecided)
         self.branches: dict[ast.If, set[bool]] = {}
+        self.try_outcomes: dict[ast.AST, set[bool]] = {}  # True: the body completed; False: it raised
         self.frame_tags: list[int] = []
         self.modules: dict[str, Any] = {}
         self.frames: list[tuple[UserFunc, Scope]] = []  # user functions being called, innermost last
@@ -224,9 +239,16 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
 
     def dead_lines(self, nodes: list[ast.AST]) -> list[tuple[int, int]]:
         """Line ranges of the ``if`` branches among ``nodes`` that no run of them took (the
-        ROS_DISTRO guard of a Dashing-era call): code that never runs under this launch."""
+        ROS_DISTRO guard of a Dashing-era call), and of the ``except`` handlers of an API mismatch
+        (``_COMPAT_ERRORS``) after a ``try`` body that always completed (``try: Node(executable=...)
+        except TypeError: Node(node_executable=...)``): code that never runs under this launch."""
         out = []
         for node in nodes:
+            if isinstance(node, ast.Try) or type(node).__name__ == "TryStar":
+                if self.try_outcomes.get(node) == {True}:
+                    out.extend((h.lineno, h.end_lineno or h.lineno) for h in node.handlers  # type: ignore[attr-defined]
+                               if _catches_only(h, _COMPAT_ERRORS))
+                continue
             taken = self.branches.get(node) if isinstance(node, ast.If) else None
             if taken is None:
                 continue  # never reached: nothing known
@@ -289,12 +311,18 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
         self.exec_block(s.body, scope)
 
     def st_Try(self, s: ast.Try, scope: Scope) -> None:
+        outcomes = self.try_outcomes.setdefault(s, set())
         try:
             self.exec_block(s.body, scope)
         except Raise:
+            outcomes.add(False)
             if s.handlers:
                 self.exec_block(s.handlers[0].body, scope)
+        except (Return, Break, Continue):  # the body left without raising
+            outcomes.add(True)
+            raise
         else:
+            outcomes.add(True)
             self.exec_block(s.orelse, scope)
         finally:
             self.exec_block(s.finalbody, scope)

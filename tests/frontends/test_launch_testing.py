@@ -60,3 +60,35 @@ def test_a_test_dependency_is_declared_only_for_the_tests(tmp_path: Path, demo_p
         "        launch_testing.actions.ReadyToTest(),\n", "")
     found = _check(tmp_path, demo_package, "launch/talker.launch.py", text)
     assert [(f.code, f.span.line) for f in found] == [("L101", 11), ("U103", 12)]
+
+
+def test_a_context_that_is_not_a_dict_literal_is_still_the_tests(tmp_path: Path, demo_package: Any) -> None:
+    # `return ld, locals()`: launch_testing's loader takes the first of any tuple (_normalize_ld);
+    # the context is never launched, so nothing of the description is unknown
+    from physai_lint import api
+    from physai_lint.engine import CheckOptions
+
+    text = TEST.format(params="").replace("{\"talker\": talker}", "locals()")
+    pkg = demo_package({"package.xml": PACKAGE_XML, "test/test_talker.test.py": text})
+    entry = str(pkg / "test/test_talker.test.py")
+    out = api.plan(CheckOptions(paths=[entry], workspace=str(tmp_path), cache=False), entry, "text")
+    assert "2 processes" in out and "Not shown" not in out
+
+
+def test_a_timeout_decorator_keeps_the_description(tmp_path: Path, demo_package: Any) -> None:
+    text = TEST.format(params="").replace(
+        "def generate_test_description", "@launch_testing.ready_to_test_action_timeout(10)\ndef generate_test_description")
+    found = _check(tmp_path, demo_package, "test/test_talker.test.py", text)
+    assert [(f.code, f.span.line) for f in found] == [("L101", 12)]
+
+
+def test_a_parametrized_description_is_unknown_not_empty(tmp_path: Path, demo_package: Any) -> None:
+    from physai_lint import api
+    from physai_lint.engine import CheckOptions
+
+    text = TEST.format(params="rate").replace(
+        "def generate_test_description", "@launch_testing.parametrize('rate', [1, 2])\ndef generate_test_description")
+    pkg = demo_package({"package.xml": PACKAGE_XML, "test/test_talker.test.py": text})
+    entry = str(pkg / "test/test_talker.test.py")
+    out = api.plan(CheckOptions(paths=[entry], workspace=str(tmp_path), cache=False), entry, "text")
+    assert "0 processes" in out and "@launch_testing.parametrize('rate', [1, 2])" in out

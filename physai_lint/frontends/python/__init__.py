@@ -84,7 +84,7 @@ def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | N
         pass
     entry = "generate_test_description" if has_gtd else "generate_launch_description"
     gld = ev.main.scope.vars.get(entry)
-    runs = has_gld or (has_gtd and isinstance(gld, UserFunc))
+    runs = has_gld or has_gtd
     if runs and result is None:
         if isinstance(gld, UserFunc):
             gld_span = spans.of(gld.node)
@@ -95,10 +95,13 @@ def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | N
                 result = call_user(ev, gld, given, {}, gld_span)
             except RecursionError:
                 result = Opaque("the file is too deeply nested to evaluate", gld_span)
-            if has_gtd and isinstance(result, tuple) and len(result) == 2 and isinstance(result[1], dict):
-                result = result[0]  # (LaunchDescription, the tests' context)
-        else:
-            result = Opaque(f"{entry} cannot be evaluated statically", Span.whole_file(path))
+            if has_gtd and isinstance(result, tuple) and len(result) == 2:
+                # (LaunchDescription, the tests' context: a dict, often locals()); launch_testing's
+                # loader takes the first of any tuple (loader.py: _normalize_ld)
+                result = result[0]
+        else:  # a decorator that cannot be followed (launch_testing.parametrize), an assignment
+            why = f" ({gld.reason})" if isinstance(gld, Opaque) and gld.reason else ""
+            result = Opaque(f"{entry} cannot be evaluated statically{why}", Span.whole_file(path))
     actions: tuple[Any, ...] = ()
     if runs:
         builder = ActionBuilder(ev)

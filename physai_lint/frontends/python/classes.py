@@ -38,7 +38,10 @@ LRU_DEFAULT = 128
 _SIMPLE_DUNDERS = frozenset(["__init__", "__post_init__", "__repr__", "__str__", "__doc__", "__module__",
                              "__qualname__"])
 _DATACLASS_OPTIONS = frozenset(["frozen", "eq", "order", "repr", "unsafe_hash", "match_args"])
-_MARKERS = frozenset(["launch_testing.markers.keep_alive"])
+# Decorators that give back the function itself (launch_testing's keep_alive marks it; its
+# ready_to_test_action_timeout(seconds) sets an attribute on it).
+_MARKERS = frozenset(["launch_testing.markers.keep_alive", "launch_testing.ready_to_test_action_timeout",
+                      "launch_testing.ready_to_test_action_timeout.ready_to_test_action_timeout"])
 _METHOD_KINDS = {"builtins.staticmethod": "static", "builtins.classmethod": "class", "builtins.property": "property"}
 
 

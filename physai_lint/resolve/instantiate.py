@@ -138,6 +138,13 @@ class Instantiator:
         if lf is None:
             return self.result
         self.result.files.append(entry)
+        # ros2 launch includes the entry with the command line's arguments, and refuses to run it
+        # unless each required one is given (IncludeLaunchDescription.execute): set, whatever
+        # their value, before the first action reads them.
+        from physai_lint.resolve.includes import required_missing
+
+        for d in required_missing(lf.actions, scope.configs):
+            scope.configs.setdefault(d.name, None)
         scope.locals = {"current_launch_file_directory": posixpath.dirname(entry),
                         "current_launch_file_path": entry, "_owner": entry}
         self._walk(lf.actions, scope)

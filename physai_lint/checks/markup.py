@@ -38,10 +38,33 @@ _ENTRY_POINT = "launch.frontend.launch_extension"
 
 
 def _extension_tags(ctx: CheckContext) -> frozenset[str]:
-    """The tags the workspace's launch extensions register: ``@expose_action('gz_server')`` in a
-    Python package that declares a ``launch.frontend.launch_extension`` entry point (ros_gz_sim,
-    ros_gz_bridge), which launch loads before it parses a file. Read on the first unknown tag."""
-    return run_memo(ctx.options, "_extension_tags", ctx.launches, lambda: _scan_extensions(ctx.packages))
+    """The tags the launch extensions register: ``@expose_action('gz_server')`` in a Python
+    package that declares a ``launch.frontend.launch_extension`` entry point, which launch loads
+    before it parses a file: the workspace's, and the released ones of the distro
+    (``RELEASED_EXTENSION_TAGS``). Read on the first unknown tag."""
+    def build() -> frozenset[str]:
+        from physai_lint.workspace.distro import released_packages
+
+        released = released_packages(ctx.distro)
+        order = ("humble", "jazzy", "kilted", "lyrical", "rolling")
+        rank = order.index(ctx.distro) if ctx.distro in order else len(order)
+        bundled = {tag for tag, (package, since) in RELEASED_EXTENSION_TAGS.items()
+                   if package in released and rank >= order.index(since)}
+        return _scan_extensions(ctx.packages) | bundled
+
+    return run_memo(ctx.options, "_extension_tags", ctx.launches, build)
+
+
+# Tags that released packages register as launch extensions (@expose_action in a package with a
+# launch.frontend.launch_extension entry point): tag -> (package, first distro that has it).
+# Read from each package's source at its distro branches (ros2/ros2_tracing humble..rolling;
+# gazebosim/ros_gz jazzy and ros2, none on humble).
+RELEASED_EXTENSION_TAGS: dict[str, tuple[str, str]] = {
+    "trace": ("tracetools_launch", "humble"),
+    "gz_server": ("ros_gz_sim", "jazzy"),
+    "gz_spawn_model": ("ros_gz_sim", "jazzy"),
+    "ros_gz_bridge": ("ros_gz_bridge", "jazzy"),
+}
 
 
 def _scan_extensions(packages: Any) -> frozenset[str]:

@@ -42,3 +42,24 @@ def test_a_workspace_extension_s_tags_are_known(tmp_path, demo_findings):
 
 def test_without_the_entry_point_launch_does_not_load_them(tmp_path, demo_findings):
     assert [line for line, _ in _l002(tmp_path, demo_findings, entry_point=False)] == [2, 3, 5]
+
+
+RELEASED = """<launch>
+  <trace session-name="s1" events-ust="ros2:*"/>
+  <gz_server world_sdf_file="empty.sdf"/>
+</launch>
+"""
+
+
+def test_released_extensions_tags_are_known_in_the_distros_that_have_them(tmp_path, demo_package):
+    # tracetools_launch registers <trace> from humble on; ros_gz_sim its <gz_server> from jazzy
+    from physai_lint.engine import CheckOptions, run_check
+
+    path = demo_package({"launch/a.launch.xml": RELEASED}) / "launch/a.launch.xml"
+
+    def l002(distro: str) -> list[tuple[int, str]]:
+        opts = CheckOptions(paths=[str(path)], workspace=str(tmp_path), cache=False, distro=distro)
+        return [(f.span.line, f.message.split(";")[0]) for f in run_check(opts).findings if f.code == "L002"]
+
+    assert l002("humble") == [(3, 'unknown tag "gz_server"')]
+    assert l002("jazzy") == []

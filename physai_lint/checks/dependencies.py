@@ -87,6 +87,26 @@ METAPACKAGES: dict[str, frozenset[str]] = {
         "nav2_velocity_smoother", "nav2_voxel_grid", "nav2_waypoint_follower"}),
     "nav2_dwb_controller": frozenset({"costmap_queue", "dwb_core", "dwb_critics", "dwb_msgs", "dwb_plugins",
                                      "nav_2d_msgs", "nav_2d_utils"}),
+    # moveit2's metapackages (package.xml at humble and rolling; members of either)
+    "moveit": frozenset({"moveit_commander", "moveit_core", "moveit_planners", "moveit_plugins", "moveit_ros",
+                         "moveit_setup_assistant"}),
+    "moveit_ros": frozenset({
+        "moveit_ros_benchmarks", "moveit_ros_move_group", "moveit_ros_perception", "moveit_ros_planning",
+        "moveit_ros_planning_interface", "moveit_ros_robot_interaction", "moveit_ros_visualization",
+        "moveit_ros_warehouse"}),
+    "moveit_planners": frozenset({"moveit_planners_chomp", "moveit_planners_ompl", "moveit_planners_stomp",
+                                  "pilz_industrial_motion_planner"}),
+    "moveit_plugins": frozenset({"moveit_ros_control_interface", "moveit_simple_controller_manager"}),
+    # ros-controls/ros2_controllers' metapackage (rolling; older distros have a subset)
+    "ros2_controllers": frozenset({
+        "ackermann_steering_controller", "admittance_controller", "battery_state_broadcaster",
+        "bicycle_steering_controller", "chained_filter_controller", "diff_drive_controller",
+        "force_torque_sensor_broadcaster", "forward_command_controller", "gpio_controllers",
+        "gps_sensor_broadcaster", "imu_sensor_broadcaster", "joint_state_broadcaster",
+        "joint_trajectory_controller", "magnetometer_broadcaster", "mecanum_drive_controller",
+        "motion_primitives_controllers", "omni_wheel_drive_controller", "parallel_gripper_controller",
+        "pid_controller", "pose_broadcaster", "range_sensor_broadcaster", "state_interfaces_broadcaster",
+        "steering_controllers_library", "tricycle_controller", "tricycle_steering_controller"}),
 }
 
 

@@ -88,3 +88,18 @@ def test_members_of_nested_metapackages_are_declared(tmp_path, demo_package):
                         "launch/a.launch.xml": xml})
     opts = CheckOptions(paths=[str(pkg / "launch/a.launch.xml")], workspace=str(tmp_path), cache=False)
     assert [f.message for f in run_check(opts).findings if f.code == "U103"] == []
+
+
+def test_moveit_and_ros2_controllers_metapackages_bring_their_members(tmp_path, demo_package):
+    # crane_x7_moveit_config: <depend>moveit</depend> brings moveit_ros, which brings move_group
+    xml = """<launch>
+  <node pkg="moveit_ros_move_group" exec="move_group" name="move_group"/>
+  <node pkg="moveit_simple_controller_manager" exec="x" name="x"/>
+  <node pkg="joint_trajectory_controller" exec="y" name="y"/>
+</launch>
+"""
+    depends = "<depend>moveit</depend><exec_depend>ros2_controllers</exec_depend>"
+    pkg = demo_package({"package.xml": PACKAGE_XML.format(name="demo", depends=depends),
+                        "launch/a.launch.xml": xml})
+    opts = CheckOptions(paths=[str(pkg / "launch/a.launch.xml")], workspace=str(tmp_path), cache=False)
+    assert [f.message for f in run_check(opts).findings if f.code == "U103"] == []

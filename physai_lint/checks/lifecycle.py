@@ -93,12 +93,16 @@ def unmanaged(ctx: CheckContext) -> Iterator[Diagnostic]:
 
 def _is_lifecycle(ctx: CheckContext, node: NodeInstance) -> bool:
     """A ``LifecycleNode`` action, or a node whose executable is known to make a lifecycle node
-    (nav2 starts its servers with ``Node``)."""
-    if node.kind == "lifecycle_node":
-        return True
-    if node.kind not in ("node", "composable_node") or ctx.interfaces is None:
+    (nav2 starts its servers with ``Node``). Not a ``LifecycleNode`` action whose executable's
+    sources make a plain node under a name they decide (ydlidar_ros2_driver's
+    ``rclcpp::Node::make_shared("...")``): launch_ros only watches its transition events, and
+    there is nothing to configure or activate."""
+    if node.kind not in ("lifecycle_node", "node", "composable_node"):
         return False
-    iface = ctx.interfaces.get(node.package, node.executable)
+    iface = ctx.interfaces.get(node.package, node.executable) if ctx.interfaces is not None else None
+    if node.kind == "lifecycle_node":
+        only_sources = iface is not None and iface.source.startswith("extracted from") and " + " not in iface.source
+        return not only_sources or bool(iface.lifecycle) or not (iface.node_name_decided and iface.node_name)
     return iface is not None and bool(iface.lifecycle)
 
 

@@ -1089,8 +1089,9 @@ def _extract_from(path: str, view: _Whole | _Windows, facts: CppFacts) -> None:
             if prev == "::" and prev2 in _LIFECYCLE_NAMESPACES and i + 1 < len(toks) and (
                     (i > 2 and toks[i - 3].text in _BASE_BEFORE and toks[i + 1].text in _BASE_AFTER)
                     or (i > 3 and toks[i - 3].text == "<" and toks[i - 4].text == "make_shared"
-                        and toks[i + 1].text == ">")):
-                out.lifecycle()  # a lifecycle node's class
+                        and toks[i + 1].text == ">")
+                    or (i + 2 < len(toks) and toks[i + 1].text == "::" and toks[i + 2].text == "make_shared")):
+                out.lifecycle()  # a lifecycle node's class, or one made (LifecycleNode::make_shared)
             continue
         if name in _FILTER_CLASSES:
             continue  # (``_filter_members`` read them)

@@ -87,3 +87,48 @@ def test_other_ways_a_node_is_brought_up(demo_findings: Any) -> None:
     assert _nav(demo_findings, extra="parameters=[{'autostart': True}]") == []
     # a manager whose node_names are not known may name it
     assert _nav(demo_findings, names="NAMES_FROM_ELSEWHERE") == []
+
+
+PLAIN_CPP = """#include <rclcpp/rclcpp.hpp>
+#include <sensor_msgs/msg/laser_scan.hpp>
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  auto node = rclcpp::Node::make_shared("driver_node");
+  auto pub = node->create_publisher<sensor_msgs::msg::LaserScan>("scan", 10);
+  rclcpp::spin(node);
+  return 0;
+}
+"""
+LIFECYCLE_CPP = PLAIN_CPP.replace("rclcpp::Node::make_shared", "rclcpp_lifecycle::LifecycleNode::make_shared")
+DRIVER_CMAKE = """cmake_minimum_required(VERSION 3.8)
+project(demo)
+find_package(ament_cmake REQUIRED)
+add_executable(driver_node src/driver_node.cpp)
+install(TARGETS driver_node DESTINATION lib/${PROJECT_NAME})
+install(DIRECTORY launch DESTINATION share/${PROJECT_NAME})
+ament_package()
+"""
+DRIVER_LAUNCH = """from launch import LaunchDescription
+from launch_ros.actions import LifecycleNode, Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        LifecycleNode(package='demo', executable='driver_node', name='driver_node', namespace=''),
+        Node(package='nav2_map_server', executable='map_server', name='map_server'),
+        Node(package='nav2_lifecycle_manager', executable='lifecycle_manager', name='lifecycle_manager',
+             parameters=[{'autostart': True, 'node_names': ['map_server']}]),
+    ])
+"""
+
+
+def test_a_plain_node_started_with_the_lifecycle_action_needs_no_manager(demo_findings: Any) -> None:
+    # ydlidar_ros2_driver: LifecycleNode(...) on an rclcpp::Node; launch_ros only watches its events
+    def s202(cpp: str) -> list[str]:
+        files = {"CMakeLists.txt": DRIVER_CMAKE, "src/driver_node.cpp": cpp, "launch/a.launch.py": DRIVER_LAUNCH}
+        return [m.split(" is launched")[0] for _, m in demo_findings(files, "launch/a.launch.py", "S202")]
+
+    assert s202(PLAIN_CPP) == []
+    assert s202(LIFECYCLE_CPP) == ["lifecycle node /driver_node"]

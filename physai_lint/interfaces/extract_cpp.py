@@ -399,9 +399,35 @@ def _constants(toks: list[Tok]) -> dict[str, str]:
     return out
 
 
+# Calls that write a parameter's value into their last argument (rclcpp::Node::get_parameter,
+# get_parameter_or; ros1-style param): a variable passed there is the parameter's value.
+_OUT_PARAM_CALLS = frozenset({"get_parameter", "get_parameter_or", "param"})
+_OUT_PARAM_BEFORE = re.compile(r"\b(?:get_parameter|get_parameter_or|param)\s*(?:<[^<>;()]*>)?\s*\("
+                               r"[^;()]*,\s*(?:this\s*->\s*)?$")
+
+
+def _passed_out(toks: list[Tok], k: int) -> bool:
+    """``get_parameter("topic", NAME)``: ``toks[k]`` is a later argument of a call that writes it."""
+    depth = 0
+    for j in range(k - 1, max(-1, k - 40), -1):
+        t = toks[j].text
+        if t in (")", "]", "}"):
+            depth += 1
+        elif t in ("(", "[", "{"):
+            if depth == 0:
+                return t == "(" and j > 0 and toks[j - 1].text in _OUT_PARAM_CALLS and \
+                    any(x.text == "," for x in toks[j + 1:k])
+            depth -= 1
+        elif t == ";":
+            return False
+    return False
+
+
 def _assigned_otherwise(toks: list[Tok], k: int) -> bool:
     """Whether ``toks[k]`` is given something other than a string literal: ``NAME = value`` (not
-    ``==``), ``NAME += ...``."""
+    ``==``), ``NAME += ...``, or a parameter's value (``get_parameter("topic", NAME)``)."""
+    if _passed_out(toks, k):
+        return True
     nxt = toks[k + 1][1] if k + 1 < len(toks) else ""
     after = toks[k + 2] if k + 2 < len(toks) else None
     if nxt == "=":
@@ -951,8 +977,8 @@ class _LazyConstants:
                 toks = tokenize(text, p, end, line, ls)
             if not toks or toks[0][1] != name or toks[0][0] != "id":
                 continue
-            if _assigned_otherwise(toks, 0):
-                return None  # a variable
+            if _assigned_otherwise(toks, 0) or _OUT_PARAM_BEFORE.search(text, max(0, p - 200), p):
+                return None  # a variable (or a parameter's value: get_parameter("topic", NAME))
             first = 2 if view._first_token(p) else 1  # (_constants skips a literal at 0 or 1)
             for j in range(first, min(len(toks), 7)):
                 if toks[j][0] == "str" and _constant_name_at(toks, j) == 0:

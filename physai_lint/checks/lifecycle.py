@@ -188,7 +188,7 @@ def _loads(node: NodeInstance) -> tuple[list[str], str] | None:
         namespace = node.namespace  # a relative controller manager name is the spawner's namespace's
     elif node.kind == "process":
         all_words = command_words(node) or []
-        for i in range(len(all_words) - 2):
+        for i in range(1, len(all_words) - 2):
             if all_words[i] == "control" and all_words[i + 1] == "load_controller" and \
                     (all_words[i - 1] or "").rsplit("/", 1)[-1] == "ros2":
                 words, namespace = all_words[i + 2:], "/"  # the ros2 command's node is in /

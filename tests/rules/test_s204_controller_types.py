@@ -97,3 +97,9 @@ def test_unknown_manager_parameters_or_managers_elsewhere_say_nothing(demo_findi
     other = """        Node(package='controller_manager', executable='spawner', arguments=['gripper', '-c', '/sim/cm']),
 """
     assert _check(demo_findings, other) == []
+
+
+def test_only_a_ros2_command_loads_controllers(demo_findings: Any):
+    # "control load_controller x ros2": not the ros2 CLI (the word before "control" is not ros2)
+    assert _check(demo_findings, """        ExecuteProcess(cmd=['control', 'load_controller', 'gripper', 'ros2']),
+""") == []

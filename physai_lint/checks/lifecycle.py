@@ -5,11 +5,17 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import Any
 
-from physai_lint.checks._params import effective
+from physai_lint.checks._params import effective, fully_known
 from physai_lint.checks._util import CONTAINER_EXECUTABLES, command_words, did_you_mean, where
 from physai_lint.checks.base import CheckContext, rule
+from physai_lint.graph.plan import SPAWNER_VALUE_OPTIONS
 from physai_lint.model.findings import Diagnostic, Related
-from physai_lint.resolve.model import LaunchResult, NodeInstance, ResolvedParamDict
+from physai_lint.resolve.model import (
+    LaunchResult,
+    NodeInstance,
+    ResolvedParamDict,
+    ResolvedParamFile,
+)
 from physai_lint.resolve.names import expand_topic_name
 
 MANAGERS = {("nav2_lifecycle_manager", "lifecycle_manager")}
@@ -162,16 +168,14 @@ def container_not_launched(ctx: CheckContext) -> Iterator[Diagnostic]:
 
 CONTROLLER_MANAGERS = {("controller_manager", "ros2_control_node")}
 _CONTROLLER_SPAWNERS = frozenset({"spawner", "spawner.py"})
-# Options of the spawner (controller_manager/spawner.py, humble to rolling) and of
-# ``ros2 control load_controller`` (ros2controlcli/verb/load_controller.py) that take a value.
-_VALUE_OPTIONS = frozenset({"-c", "--controller-manager", "--controller-manager-timeout", "--switch-timeout",
-                            "--service-call-timeout", "--controller-ros-args", "--set-state", "--state",
-                            "--spin-time"})
 # Options that give the controller its type another way (a type, a parameter file that may carry
 # it: jazzy's spawner reads "type" from it, a namespace that moves the controller manager, or
 # per-controller options): the controller manager's own parameters no longer decide.
 _TYPE_ELSEWHERE = frozenset({"-t", "--controller-type", "-p", "--param-file", "-n", "--namespace",
                              "--controller", "--params-file", "--fallback_controllers"})
+# The other options that take a value: the spawner's (graph.plan reads its controller names too)
+# and those of ``ros2 control load_controller`` (ros2controlcli/verb/load_controller.py).
+_VALUE_OPTIONS = (SPAWNER_VALUE_OPTIONS - _TYPE_ELSEWHERE) | {"--set-state", "--state", "--spin-time"}
 
 
 def _loads(node: NodeInstance) -> tuple[list[str], str] | None:
@@ -275,9 +279,6 @@ def controller_type_not_set(ctx: CheckContext) -> Iterator[Diagnostic]:
 def _all_sources_read(ctx: CheckContext, node: NodeInstance, params: dict[str, Any]) -> bool:
     """Every parameter source of the controller manager is known and read (a missing file is
     P101's: the types it would have given are not reported again here)."""
-    from physai_lint.checks._params import fully_known
-    from physai_lint.resolve.model import ResolvedParamFile
-
     if any(isinstance(s, ResolvedParamFile) and s.status == "missing" for s in node.param_sources):
         return False
     return fully_known(ctx, node, params)

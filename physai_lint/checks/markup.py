@@ -43,13 +43,12 @@ def _extension_tags(ctx: CheckContext) -> frozenset[str]:
     before it parses a file: the workspace's, and the released ones of the distro
     (``RELEASED_EXTENSION_TAGS``). Read on the first unknown tag."""
     def build() -> frozenset[str]:
-        from physai_lint.workspace.distro import released_packages
+        from physai_lint.workspace.distro import DISTROS, released_packages
 
         released = released_packages(ctx.distro)
-        order = ("humble", "jazzy", "kilted", "lyrical", "rolling")
-        rank = order.index(ctx.distro) if ctx.distro in order else len(order)
+        rank = DISTROS.index(ctx.distro) if ctx.distro in DISTROS else len(DISTROS)
         bundled = {tag for tag, (package, since) in RELEASED_EXTENSION_TAGS.items()
-                   if package in released and rank >= order.index(since)}
+                   if package in released and rank >= DISTROS.index(since)}
         return _scan_extensions(ctx.packages) | bundled
 
     return run_memo(ctx.options, "_extension_tags", ctx.launches, build)

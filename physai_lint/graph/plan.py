@@ -122,7 +122,7 @@ def vertex_key(v: PlanVertex) -> tuple[Any, ...]:
 # Options of controller_manager's spawner scripts that take a value (controller_manager/spawner.py,
 # unspawner.py, hardware_spawner.py, humble to rolling): the value is not a controller's name.
 # --fallback_controllers takes every name up to the next option.
-_SPAWNER_VALUE_OPTIONS = frozenset({
+SPAWNER_VALUE_OPTIONS = frozenset({
     "-c", "--controller-manager", "-p", "--param-file", "-n", "--namespace", "-t", "--controller-type",
     "--controller-manager-timeout", "--switch-timeout", "--service-call-timeout", "--controller-ros-args"})
 _SPAWNERS = frozenset({"spawner", "unspawner", "hardware_spawner", "spawner.py", "unspawner.py"})
@@ -144,7 +144,7 @@ def first_positional(args: tuple[str | None, ...], limit: int = 32, package: str
             continue
         if a.startswith("-"):
             if spawner:
-                skip = "=" not in a and a in _SPAWNER_VALUE_OPTIONS
+                skip = "=" not in a and a in SPAWNER_VALUE_OPTIONS
                 nargs = a == "--fallback_controllers"
             continue
         if a and not nargs:

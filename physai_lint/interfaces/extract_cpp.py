@@ -402,7 +402,8 @@ def _constants(toks: list[Tok]) -> dict[str, str]:
 # Calls that write a parameter's value into their last argument (rclcpp::Node::get_parameter,
 # get_parameter_or; ros1-style param): a variable passed there is the parameter's value.
 _OUT_PARAM_CALLS = frozenset({"get_parameter", "get_parameter_or", "param"})
-_OUT_PARAM_BEFORE = re.compile(r"\b(?:get_parameter|get_parameter_or|param)\s*(?:<[^<>;()]*>)?\s*\("
+# (the same, read backwards from a name in the text: ``get_parameter("topic", this->NAME``)
+_OUT_PARAM_BEFORE = re.compile(rf"\b(?:{'|'.join(sorted(_OUT_PARAM_CALLS))})\s*(?:<[^<>;()]*>)?\s*\("
                                r"[^;()]*,\s*(?:this\s*->\s*)?$")
 
 

@@ -52,6 +52,15 @@ def test_the_help_warns_when_the_dependency_would_close_a_cycle(tmp_path, demo_p
                      '"acme_tools" or a package depending on both')
 
 
+def _u103_messages(tmp_path: Path, demo_package: Callable, depends: str, xml: str) -> list[str]:
+    """The U103 messages of checking the demo package's launch/a.launch.xml (``xml``) when its
+    package.xml declares ``depends``."""
+    pkg = demo_package({"package.xml": PACKAGE_XML.format(name="demo", depends=depends),
+                        "launch/a.launch.xml": xml})
+    opts = CheckOptions(paths=[str(pkg / "launch/a.launch.xml")], workspace=str(tmp_path), cache=False)
+    return [f.message for f in run_check(opts).findings if f.code == "U103"]
+
+
 def test_a_dependency_brought_by_a_declared_metapackage_or_workspace_package_is_declared(
         tmp_path, demo_package):
     # <depend>ros2_control</depend> installs controller_manager; a workspace package declared
@@ -67,10 +76,7 @@ def test_a_dependency_brought_by_a_declared_metapackage_or_workspace_package_is_
     (tmp_path / "src" / "acme_tools").mkdir(parents=True)
     (tmp_path / "src" / "acme_tools" / "package.xml").write_text(PACKAGE_XML.format(name="acme_tools", depends=""))
     depends = "<depend>ros2_control</depend><exec_depend>acme_bringup</exec_depend>"
-    pkg = demo_package({"package.xml": PACKAGE_XML.format(name="demo", depends=depends),
-                        "launch/a.launch.xml": xml})
-    opts = CheckOptions(paths=[str(pkg / "launch/a.launch.xml")], workspace=str(tmp_path), cache=False)
-    assert [f.message for f in run_check(opts).findings if f.code == "U103"] == []
+    assert _u103_messages(tmp_path, demo_package, depends, xml) == []
 
 
 def test_members_of_nested_metapackages_are_declared(tmp_path, demo_package):
@@ -84,10 +90,7 @@ def test_members_of_nested_metapackages_are_declared(tmp_path, demo_package):
 </launch>
 """
     depends = "<depend>ros_gz</depend><exec_depend>navigation2</exec_depend><exec_depend>ros_ign</exec_depend>"
-    pkg = demo_package({"package.xml": PACKAGE_XML.format(name="demo", depends=depends),
-                        "launch/a.launch.xml": xml})
-    opts = CheckOptions(paths=[str(pkg / "launch/a.launch.xml")], workspace=str(tmp_path), cache=False)
-    assert [f.message for f in run_check(opts).findings if f.code == "U103"] == []
+    assert _u103_messages(tmp_path, demo_package, depends, xml) == []
 
 
 def test_moveit_and_ros2_controllers_metapackages_bring_their_members(tmp_path, demo_package):
@@ -99,7 +102,4 @@ def test_moveit_and_ros2_controllers_metapackages_bring_their_members(tmp_path, 
 </launch>
 """
     depends = "<depend>moveit</depend><exec_depend>ros2_controllers</exec_depend>"
-    pkg = demo_package({"package.xml": PACKAGE_XML.format(name="demo", depends=depends),
-                        "launch/a.launch.xml": xml})
-    opts = CheckOptions(paths=[str(pkg / "launch/a.launch.xml")], workspace=str(tmp_path), cache=False)
-    assert [f.message for f in run_check(opts).findings if f.code == "U103"] == []
+    assert _u103_messages(tmp_path, demo_package, depends, xml) == []

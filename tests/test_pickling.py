@@ -7,6 +7,8 @@ import dataclasses
 import pickle
 from pathlib import Path
 
+import pytest
+
 from physai_lint.files import Job, run_job
 from physai_lint.model import launch, pickling, span, values
 from physai_lint.model.pickling import fast_pickle
@@ -82,3 +84,72 @@ def test_a_subclass_keeps_its_own_fields_and_copies_work() -> None:
         assert both[0] is both[1]  # shared objects stay shared
     finally:
         del globals()["Base"], globals()["Child"]
+
+
+# ---- fast_init ---------------------------------------------------------------------------------
+
+def _twin_classes():
+    from physai_lint.model.pickling import fast_init
+
+    def make(fast):
+        @dataclasses.dataclass(frozen=True, slots=True)
+        class Point:
+            file: str
+            line: int
+            col: int = 1
+            tag: tuple = ()
+
+        return fast_init(Point) if fast else Point
+
+    return make(False), make(True)
+
+
+def test_fast_init_builds_the_same_objects_with_the_same_signature():
+    import inspect
+
+    plain, fast = _twin_classes()
+    assert fast.__init__.__code__.co_freevars  # replaced: the descriptors are bound in a closure
+    same = [(p.name, p.kind, p.default) for p in inspect.signature(plain).parameters.values()]
+    assert [(p.name, p.kind, p.default) for p in inspect.signature(fast).parameters.values()] == same
+    for args, kwargs in [(("a", 1), {}), (("a", 1, 7), {}), (("a",), {"line": 2, "tag": (1,)}),
+                         ((), {"file": "b", "line": 3, "col": 4})]:
+        a, b = plain(*args, **kwargs), fast(*args, **kwargs)
+        assert dataclasses.astuple(a) == dataclasses.astuple(b)
+        assert repr(a).split("(", 1)[1] == repr(b).split("(", 1)[1]
+    assert fast("a", 1) == fast("a", 1) and hash(fast("a", 1)) == hash(fast("a", 1))
+    with pytest.raises(TypeError):
+        fast("a")  # a required field is still required
+    with pytest.raises(TypeError):
+        fast("a", 1, nope=2)
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        fast("a", 1).line = 2  # type: ignore[misc]
+
+
+def test_fast_init_leaves_classes_it_cannot_rebuild_alone():
+    from physai_lint.model.pickling import fast_init
+
+    @dataclasses.dataclass(frozen=True, slots=True)
+    class WithFactory:
+        items: list = dataclasses.field(default_factory=list)
+
+    @dataclasses.dataclass(slots=True)
+    class Mutable:
+        x: int
+
+    for cls in (WithFactory, Mutable):
+        before = cls.__init__
+        assert fast_init(cls) is cls and cls.__init__ is before
+    assert WithFactory().items == [] and WithFactory().items is not WithFactory().items
+
+
+def test_the_hot_model_classes_have_the_fast_init_and_pickle_round_trip():
+    import pickle
+
+    from physai_lint.model.span import Span
+    from physai_lint.params.model import FileParam
+
+    assert Span.__init__.__code__.co_freevars and FileParam.__init__.__code__.co_freevars
+    span = Span("/a.yaml", 1, 2, 3, 4)
+    fp = FileParam("rate", 1.0, "double", "1.0", span, span)
+    assert fp.quoted is False and fp.launch_value is None
+    assert pickle.loads(pickle.dumps(fp)) == fp

@@ -6,7 +6,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 from typing import Any, Literal
 
-from physai_lint.model.pickling import fast_pickle_module
+from physai_lint.model.pickling import fast_init, fast_pickle_module
 from physai_lint.model.span import Span
 
 ParamType = Literal[
@@ -18,6 +18,7 @@ PARAM_TYPES: frozenset[str] = frozenset(
      "string_array", "byte_array"))
 
 
+@fast_init
 @dataclass(frozen=True, slots=True)
 class Endpoint:
     """A topic/service/action name exactly as written in the code (relative, absolute or ``~/``);

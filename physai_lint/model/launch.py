@@ -12,7 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Literal, Union
 
-from physai_lint.model.pickling import fast_pickle_module
+from physai_lint.model.pickling import fast_init, fast_pickle_module
 
 from .span import Span
 from .values import PValue, Value
@@ -40,6 +40,7 @@ class ActionBase:
     condition: Condition | None
 
 
+@fast_init
 @dataclass(frozen=True, slots=True)
 class DeclareArgument(ActionBase):
     name: str

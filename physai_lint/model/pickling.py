@@ -68,3 +68,40 @@ def fast_pickle_module(namespace: dict[str, Any]) -> None:
         if (isinstance(obj, type) and obj.__module__ == module and dataclasses.is_dataclass(obj)
                 and "__slots__" in obj.__dict__ and obj.__dataclass_params__.frozen):  # type: ignore[attr-defined]
             fast_pickle(obj)
+
+
+def fast_init(cls: type) -> type:
+    """Give a frozen, slotted dataclass an ``__init__`` that sets each field through its slot's
+    descriptor (``member_descriptor.__set__``), bound once per class, instead of the generated
+    ``object.__setattr__(self, 'name', value)`` per field: the same object in about half the
+    time. For the classes built hundreds of thousands of times in a run (``Span``: ~260,000 on
+    the 1,180-file workspace, parameter-file values, texts). Same signature and defaults; classes
+    with a ``default_factory``, a ``__post_init__``, keyword-only or ``init=False`` fields keep
+    the generated one (apply it after ``@dataclass``)."""
+    params = cls.__dataclass_params__  # type: ignore[attr-defined]
+    fields = dataclasses.fields(cls)
+    if (not params.frozen or "__slots__" not in cls.__dict__ or hasattr(cls, "__post_init__")
+            or any(not f.init or f.kw_only or f.default_factory is not dataclasses.MISSING
+                   for f in fields)):
+        return cls
+    env: dict[str, Any] = {}
+    args, body = [], []
+    for f in fields:
+        slot = next(k.__dict__[f.name] for k in cls.__mro__ if f.name in k.__dict__)
+        env[f"_set_{f.name}"] = slot.__set__
+        if f.default is dataclasses.MISSING:
+            args.append(f.name)
+        else:
+            env[f"_dflt_{f.name}"] = f.default
+            args.append(f"{f.name}=_dflt_{f.name}")
+        body.append(f"        _set_{f.name}(__dataclass_self__, {f.name})")
+    source = (f"def __make__({', '.join(env)}):\n"
+              f"    def __init__(__dataclass_self__, {', '.join(args)}):\n" + "\n".join(body or ["        pass"]) +
+              "\n    return __init__\n")
+    scope: dict[str, Any] = {}
+    exec(source, {}, scope)  # noqa: S102 - our own generated code, like dataclasses' own
+    init = scope["__make__"](**env)
+    init.__qualname__ = f"{cls.__qualname__}.__init__"
+    init.__module__ = cls.__module__
+    cls.__init__ = init  # type: ignore[misc]
+    return cls

@@ -3,9 +3,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from physai_lint.model.pickling import fast_pickle_module
+from physai_lint.model.pickling import fast_init, fast_pickle_module
 
 
+@fast_init
 @dataclass(frozen=True, slots=True, order=True)
 class Span:
     """A region of a file: 1-based lines and columns; ``end_col`` is the column after the last character.

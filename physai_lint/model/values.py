@@ -9,17 +9,19 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Literal, Union
 
-from physai_lint.model.pickling import fast_pickle_module
+from physai_lint.model.pickling import fast_init, fast_pickle_module
 
 from .span import Span
 
 
+@fast_init
 @dataclass(frozen=True, slots=True)
 class Text:
     text: str
     span: Span | None = None
 
 
+@fast_init
 @dataclass(frozen=True, slots=True)
 class LaunchConfig:
     """``LaunchConfiguration('name', default=...)`` / ``$(var name [default])``."""

@@ -12,7 +12,7 @@ import math
 from dataclasses import dataclass, field
 from typing import Any, Mapping
 
-from physai_lint.model.pickling import fast_pickle_module
+from physai_lint.model.pickling import fast_init, fast_pickle_module
 from physai_lint.model.span import Span
 from physai_lint.resolve.model import (
     ParamSourceR,
@@ -28,6 +28,7 @@ from .rcl import RclParams, Write
 from .typing import launch_dump_retype, pyyaml_kind
 
 
+@fast_init
 @dataclass(frozen=True, slots=True)
 class Blame:
     span: Span | None

@@ -399,8 +399,12 @@ def load_param_file(path: str, text: str, distro: str = "humble") -> ParamFileMo
     dup = _DupTracker(path, p.model)
     depth = 0
     count = 0
+    # The parser's events one by one (``yaml.parse`` wraps the same loop in a generator), each
+    # handed to the rcl mirror until its first error (``_fail``), and to the duplicate-key tracker.
+    loader = _Loader(text)
+    next_event = loader.get_event
     try:
-        for ev in yaml.parse(text, Loader=_Loader):
+        while (ev := next_event()) is not None:
             count += 1
             if count > MAX_EVENTS:
                 p.model.diagnostics.append(Diagnostic(
@@ -411,7 +415,10 @@ def load_param_file(path: str, text: str, distro: str = "humble") -> ParamFileMo
                 span = _span(path, ev)  # one Span per scalar, shared by both trackers
                 dup.node(ev, True, span)
                 if not p.failed:
-                    _guard(p, p.scalar, ev, span)
+                    try:
+                        p.scalar(ev, span)
+                    except _RclError as e:
+                        _fail(p, e)
             elif isinstance(ev, yaml.MappingStartEvent):
                 dup.node(ev, False)
                 dup.start("map")
@@ -423,12 +430,18 @@ def load_param_file(path: str, text: str, distro: str = "humble") -> ParamFileMo
                     p.model.ok = False
                     break
                 if not p.failed:
-                    _guard(p, p.mapping_start, ev)
+                    try:
+                        p.mapping_start(ev)
+                    except _RclError as e:
+                        _fail(p, e)
             elif isinstance(ev, yaml.MappingEndEvent):
                 dup.end()
                 depth -= 1
                 if not p.failed:
-                    _guard(p, p.mapping_end, ev)
+                    try:
+                        p.mapping_end(ev)
+                    except _RclError as e:
+                        _fail(p, e)
             elif isinstance(ev, yaml.SequenceStartEvent):
                 dup.node(ev, False)
                 dup.start("seq")
@@ -440,16 +453,25 @@ def load_param_file(path: str, text: str, distro: str = "humble") -> ParamFileMo
                     p.model.ok = False
                     break
                 if not p.failed:
-                    _guard(p, p.sequence_start, ev)
+                    try:
+                        p.sequence_start(ev)
+                    except _RclError as e:
+                        _fail(p, e)
             elif isinstance(ev, yaml.SequenceEndEvent):
                 dup.end()
                 depth -= 1
                 if not p.failed:
-                    _guard(p, p.sequence_end, ev)
+                    try:
+                        p.sequence_end(ev)
+                    except _RclError as e:
+                        _fail(p, e)
             elif isinstance(ev, yaml.AliasEvent):
                 dup.node(ev, False)
                 if not p.failed:
-                    _guard(p, p.alias, ev)
+                    try:
+                        p.alias(ev)
+                    except _RclError as e:
+                        _fail(p, e)
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark or exc.context_mark
         line = mark.line + 1 if mark is not None else 1
@@ -463,6 +485,8 @@ def load_param_file(path: str, text: str, distro: str = "humble") -> ParamFileMo
         p.model.diagnostics.append(Diagnostic(
             "X001", Span.whole_file(path), f"YAML error: {exc}", key="yaml"))
         p.model.ok = False
+    finally:
+        loader.dispose()
     p.model.blocks = [b.freeze() for b in p.blocks]
     # rclcpp throws "No parameter value set" for a parameter that never got a value ([]).
     if p.model.ok and not p.failed and (p.maybe_unset or p.pending):
@@ -537,10 +561,8 @@ def _flat_block(path: str, text: str) -> NodeBlock | None:
     return NodeBlock("", span, tuple(params), False, None, False)
 
 
-def _guard(p: _Parser, fn: Any, *args: Any) -> None:
-    try:
-        fn(*args)
-    except _RclError as e:
-        p.failed = True
-        p.model.ok = False
-        p.model.diagnostics.append(Diagnostic(e.code, e.span, e.message, e.help))
+def _fail(p: _Parser, e: _RclError) -> None:
+    """rcl's first error: the file is not loaded; no later event goes to the rcl mirror."""
+    p.failed = True
+    p.model.ok = False
+    p.model.diagnostics.append(Diagnostic(e.code, e.span, e.message, e.help))

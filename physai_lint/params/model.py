@@ -11,7 +11,7 @@ from dataclasses import dataclass, field
 from typing import Any, Literal, Union
 
 from physai_lint.model.findings import Diagnostic
-from physai_lint.model.pickling import fast_pickle_module
+from physai_lint.model.pickling import fast_init, fast_pickle_module
 from physai_lint.model.span import Span
 
 # Kinds of a parameter value in a params file (rcl never makes byte arrays from YAML).
@@ -28,6 +28,7 @@ SLOT_ORDER: tuple[str, ...] = (
 )
 
 
+@fast_init
 @dataclass(frozen=True, slots=True)
 class FileParam:
     """One parameter value as written: ``name`` is the dotted name rcl gives it (quirks included),
@@ -44,6 +45,7 @@ class FileParam:
     launch_value: Any = None
 
 
+@fast_init
 @dataclass(frozen=True, slots=True)
 class NodeBlock:
     """A ``<node key>: {ros__parameters: {...}}`` block. ``key`` is the node key as rcl stores it

@@ -9,7 +9,7 @@ from typing import Any, Literal, Union
 
 from physai_lint.model.findings import Diagnostic
 from physai_lint.model.launch import ComposableNode, NodeAction
-from physai_lint.model.pickling import fast_pickle_module
+from physai_lint.model.pickling import fast_init, fast_pickle_module
 from physai_lint.model.span import Span
 
 Activity = Union[bool, None]  # True, False, or None for unknown
@@ -21,6 +21,7 @@ ParamScalar = Union[bool, int, float, str]
 ParamValue = Union[ParamScalar, list[ParamScalar], None]
 
 
+@fast_init
 @dataclass(frozen=True, slots=True)
 class EffRemap:
     """One remapping rule as handed to the node, in rcl order. ``origin`` "global" = ``SetRemap`` in
@@ -52,6 +53,7 @@ class ResolvedParamFile:
     derived_from: str | None = None
 
 
+@fast_init
 @dataclass(frozen=True, slots=True)
 class ResolvedParam:
     """One parameter from a launch dict / ``<param>`` / ``SetParameter``: typed as launch types it
@@ -66,6 +68,7 @@ class ResolvedParam:
     item_spans: tuple[Span, ...] | None = None  # per list item, when written as a literal list
 
 
+@fast_init
 @dataclass(frozen=True, slots=True)
 class ResolvedParamDict:
     """A dict source. ``key`` is the node key launch writes the temporary file under: the node's fqn
@@ -118,6 +121,7 @@ class NodeInstance:
     package_from_config: bool = False  # the package name came from a launch configuration
 
 
+@fast_init
 @dataclass(frozen=True, slots=True)
 class ConfigRead:
     """A launch configuration read (``LaunchConfiguration``, ``$(var)``). ``defined`` False means

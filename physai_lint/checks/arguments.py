@@ -57,9 +57,12 @@ def unused_argument(ctx: CheckContext) -> Iterator[Diagnostic]:
             read_names |= _READ_BY_EVERY_PROCESS
         # a file of this launch that reads the whole context.launch_configurations reads them all
         reads_all = any(EVERY_CONFIGURATION in _escaped(ctx, f) for f in launch.files)
+        # a parameter file with allow_substs whose path is unknown may read those of the files
+        # that lead to it (what a sibling subtree declares it most likely does not)
+        open_files = {f for _, chain in launch.open_reads for f in chain}
         for arg in launch.declared_args:
             # one finding per declaration; a helper (add_launch_arg) declares many at one span
-            if not arg.name or arg.name in read_names or arg.file in opaque_files \
+            if not arg.name or arg.name in read_names or arg.file in opaque_files or arg.file in open_files \
                     or (arg.span, arg.name) in seen:  # no name: L009 (XML/YAML) reports it
                 continue
             if launch.opaque and any(s.file == arg.file for s, _ in launch.opaque):

@@ -113,6 +113,15 @@ class Instantiator:
         for arg in self.declared_by_name.get(name, ()):
             arg.reads += 1
 
+    def reads_every_configuration(self, span: Span) -> None:
+        """Something at ``span`` may read any launch configuration (a parameter file with
+        ``allow_substs`` whose path is unknown): a read of ``EVERY_CONFIGURATION``, defined, so
+        that no argument passed to an include holding it counts as ignored (L106), and an open
+        read along the chain of files that leads to it, whose declared arguments it may read
+        (L102)."""
+        self.result.config_reads.append(ConfigRead(ir.EVERY_CONFIGURATION, span, True, True, self.frame.active))
+        self.result.open_reads.append((span, self.frame.chain))
+
     def _on_package(self, name: str, span: Span | None, from_config: bool | str) -> None:
         self.result.package_refs.append((name, span, self.frame.file, from_config))
 

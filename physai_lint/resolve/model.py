@@ -222,6 +222,9 @@ class LaunchResult:
     delays: dict[str, float | None] = field(default_factory=dict)
     # Conditions that can never be true (or never false): (span, explanation)
     dead_conditions: list[tuple[Span, str]] = field(default_factory=list)
+    # Parts that may read any launch configuration (a parameter file with allow_substs whose
+    # path is unknown): (span, the launch files from the entry down to the one holding it)
+    open_reads: list[tuple[Span, tuple[str, ...]]] = field(default_factory=list)
 
 
 fast_pickle_module(globals())  # tuples instead of dataclasses.fields() per object (model/pickling.py)

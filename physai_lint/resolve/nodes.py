@@ -117,6 +117,11 @@ class NodeBuilder:
             return ResolvedParamFile(path, None, status, span, origin, allow_substs,  # type: ignore[arg-type]
                                      model=model, derived_from=virtual.source if virtual else None)
         source, status = self._locate(path)
+        if allow_substs and status not in ("ok", "missing", "not_installed"):
+            # launch_ros performs the $(var ...) of a file that cannot be read here (its path is
+            # unknown, or outside the workspace): it may read any launch configuration, so an
+            # includer's argument is not "ignored" nor a declared one "unused"
+            self.inst.reads_every_configuration(span)
         if allow_substs and status == "ok" and path:
             derived = with_substitutions(self.inst.ev, path, span, scope)
             if derived is not False:

@@ -77,3 +77,77 @@ def generate_launch_description():
     return LaunchDescription([OpaqueFunction(function=setup)])
 """
     assert _l106(demo_findings, child, "{'add_gripper': 'true', 'use_gripper_node': 'false'}") == []
+
+
+# A parameter file loaded with allow_substs has its $(var ...) performed by launch_ros: when its
+# path is not known here (an includer's argument), it may read any configuration (autoware's
+# pose_initializer.param.yaml reads user_defined_initial_pose/enable, which the includer passes).
+INNER_XML = """<launch>
+  <arg name="config_file" default="$(find-pkg-share demo)/config/p.param.yaml"/>
+  <node pkg="demo" exec="talker" name="talker">
+    <param from="$(var config_file)" allow_substs="true"/>
+  </node>
+</launch>
+"""
+PARAMS = "/**:\n  ros__parameters:\n    enable: $(var feature/enable)\n"
+
+
+def _outer_xml(extra: str) -> str:
+    return f"""<launch>
+  <arg name="param_path"/>
+  <include file="$(find-pkg-share demo)/launch/inner.launch.xml">
+    <arg name="feature/enable" value="true"/>
+    <arg name="typo" value="1"/>
+{extra}  </include>
+</launch>
+"""
+
+
+def test_an_allow_substs_file_of_unknown_path_may_read_any_argument(demo_findings) -> None:
+    found = demo_findings({"launch/inner.launch.xml": INNER_XML, "config/p.param.yaml": PARAMS,
+                           "launch/outer.launch.xml": _outer_xml(
+                               '    <arg name="config_file" value="$(var param_path)"/>\n')},
+                          "launch/outer.launch.xml", "L106")
+    assert found == []
+
+
+def test_a_known_allow_substs_file_reads_only_what_it_names(demo_findings) -> None:
+    found = demo_findings({"launch/inner.launch.xml": INNER_XML, "config/p.param.yaml": PARAMS,
+                           "launch/outer.launch.xml": _outer_xml("")},
+                          "launch/outer.launch.xml", "L106")
+    assert [m.split(" is passed")[0] for _, m in found] == ['argument "typo"']
+
+
+def test_python_parameter_file_with_allow_substs_of_unknown_path(demo_findings) -> None:
+    child = """from launch.actions import DeclareLaunchArgument
+from launch_ros.parameter_descriptions import ParameterFile
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('params'),
+        DeclareLaunchArgument('unused_here'),
+        Node(package='demo', executable='talker',
+             parameters=[ParameterFile(LaunchConfiguration('params'), allow_substs=True)]),
+    ])
+"""
+    assert _l106(demo_findings, child, "{'params': LaunchConfiguration('p'), 'x': '1'}") == []
+    assert demo_findings({"launch/child.launch.py": HEAD + child}, "launch/child.launch.py", "L102") == []
+
+
+def test_l102_an_unknown_allow_substs_file_reads_along_its_chain_only(demo_findings) -> None:
+    """The includer's argument may be what the file reads (configurations are not scoped by
+    includes); a sibling file's unused argument is still reported."""
+    outer = """<launch>
+  <arg name="param_path"/>
+  <arg name="feature_enable" default="true"/>
+  <include file="$(find-pkg-share demo)/launch/inner.launch.xml">
+    <arg name="config_file" value="$(var param_path)"/>
+  </include>
+  <include file="$(find-pkg-share demo)/launch/sibling.launch.xml"/>
+</launch>
+"""
+    sibling = '<launch>\n  <arg name="never_read" default="1"/>\n</launch>\n'
+    found = demo_findings({"launch/inner.launch.xml": INNER_XML, "launch/sibling.launch.xml": sibling,
+                           "launch/outer.launch.xml": outer}, "launch/outer.launch.xml", "L102")
+    assert [m for _, m in found] == ['launch argument "never_read" is declared but never read']

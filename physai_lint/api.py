@@ -12,7 +12,7 @@ import os
 from typing import Any
 
 from physai_lint.engine import CheckOptions, Project, build_project, name_nodes
-from physai_lint.errors import UsageError
+from physai_lint.errors import UnloadableLaunch, UsageError
 from physai_lint.resolve.model import LaunchResult, NodeInstance, ResolvedParamFile
 
 GRAPH_FORMATS = ("text", "json", "dot", "mermaid", "html")
@@ -26,8 +26,25 @@ def _project(opts: CheckOptions, entry: str) -> tuple[Project, LaunchResult]:
     entry_abs = os.path.abspath(entry).replace(os.sep, "/")
     for launch in project.launches:
         if launch.entry == entry_abs:
+            if project.store.launches.get(entry_abs) is None:
+                raise UnloadableLaunch(_load_errors(project, entry_abs))
             return project, launch
     raise UsageError(not_a_launch_file(project, entry_abs))
+
+
+def _load_errors(project: Project, entry: str) -> list[str]:
+    """The findings that keep ``entry`` from loading, as ``check`` prints them on one line."""
+    from physai_lint.catalog import load_catalog
+    from physai_lint.report import rel
+
+    catalog = load_catalog()
+    lines = []
+    for d in sorted(project.diagnostics, key=lambda d: (d.span.line, d.span.col, d.code)):
+        if d.span.file == entry and d.code.startswith("X"):
+            doc = catalog.get(d.code)
+            name = f" [{doc.name}]" if doc is not None else ""
+            lines.append(f"{rel(entry, project.cwd)}:{d.span.line}:{d.span.col}: {d.code}{name} {d.message}")
+    return lines or [f'{rel(entry, project.cwd)}: the launch file cannot be loaded']
 
 
 def not_a_launch_file(project: Project, target: str) -> str:
@@ -36,6 +53,7 @@ def not_a_launch_file(project: Project, target: str) -> str:
 
     reason = next((why for path, why in project.skipped if path == target),
                   "a parameter file" if target in project.param_files else "")
+    reason = reason.removeprefix("not a launch file: ")  # the sniffer's reason may say it too
     return f'"{rel(target, project.cwd)}" is not a launch file' + (f": {reason}" if reason else "")
 
 

@@ -26,6 +26,11 @@ def compute_plan(opts: CheckOptions, entry: str, cwd: str | None = None) -> tupl
 
             raise UsageError(not_a_launch_file(project, target))
         launch = project.launches[0]
+    elif project.store.launches.get(target) is None:
+        from physai_lint.api import _load_errors
+        from physai_lint.errors import UnloadableLaunch
+
+        raise UnloadableLaunch(_load_errors(project, target))
     graph = build_graph(launch, project.interfaces)
     cache: dict[int, Any] = {}
 

@@ -93,7 +93,7 @@ def _run(args: List[str]) -> int:
 
 
 def _run_command(args: List[str]) -> int:
-    from physai_lint.errors import ConfigError, UsageError
+    from physai_lint.errors import ConfigError, UnloadableLaunch, UsageError
 
     try:
         import typer
@@ -113,6 +113,10 @@ def _run_command(args: List[str]) -> int:
     except (UsageError, ConfigError) as exc:
         _error(str(exc))
         return 2
+    except UnloadableLaunch as exc:
+        for line in exc.lines:
+            _error(line)
+        return 1
     except BrokenPipeError:
         return 2
     except Exception as exc:  # a crash is a bug: one line, never a traceback

@@ -429,7 +429,7 @@ class Runner:
     def _pipeline(self, fmt: str, path: Path, api_too: bool) -> None:
         from physai_lint import api
         from physai_lint.engine import CheckOptions, run_check
-        from physai_lint.errors import UsageError
+        from physai_lint.errors import UnloadableLaunch, UsageError
         from physai_lint.report import FORMATS, render
 
         opts = CheckOptions(paths=[str(self.root)], workspace=str(self.root), cache=False, jobs=1)
@@ -445,5 +445,5 @@ class Runner:
                          lambda: api.params(opts, str(path), None, "json")):
                 try:
                     call()
-                except UsageError:
-                    pass  # a one-line exit-2 error for the user, not a crash
+                except (UsageError, UnloadableLaunch):
+                    pass  # one-line errors for the user (exit 2, or 1 with the parse error), not a crash

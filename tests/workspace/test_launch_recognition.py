@@ -253,3 +253,20 @@ def test_cli_warns_when_a_directory_holds_nothing_to_check(demo):
     proc = _cli(["src", "--no-cache"], ws)
     assert proc.returncode == 0 and proc.stdout.strip() == "All checks passed! (0 files)"
     assert proc.stderr == 'physai-lint: warning: no launch or parameter file found in "src"\n'
+
+
+def test_cli_graph_plan_params_of_a_file_that_cannot_load_say_why(demo):
+    """An empty plan would read as a launch that starts nothing: the parse error instead, exit 1
+    (an error finding, as `check` exits)."""
+    ws = demo({"launch/bad.launch.py": "from launch import LaunchDescription\n"
+                                       "def generate_launch_description(:\n    return LaunchDescription([])\n",
+               "setup.py": "from setuptools import setup\nsetup(name='demo')\n"})
+    for command in ("graph", "plan", "params"):
+        proc = _cli([command, "src/demo/launch/bad.launch.py"], ws)
+        assert (proc.returncode, proc.stdout) == (1, "")
+        assert proc.stderr == ('error: src/demo/launch/bad.launch.py:2:33: X001 [parse-error] python syntax '
+                               'error: "invalid syntax"\n')
+    proc = _cli(["plan", "src/demo/setup.py"], ws)  # the reason said once
+    assert proc.returncode == 2 and proc.stderr == (
+        'error: "src/demo/setup.py" is not a launch file: no launch frontend takes it, and as Python it '
+        'defines no generate_launch_description\n')

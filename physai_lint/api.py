@@ -26,25 +26,24 @@ def _project(opts: CheckOptions, entry: str) -> tuple[Project, LaunchResult]:
     entry_abs = os.path.abspath(entry).replace(os.sep, "/")
     for launch in project.launches:
         if launch.entry == entry_abs:
-            if project.store.launches.get(entry_abs) is None:
-                raise UnloadableLaunch(_load_errors(project, entry_abs))
+            ensure_loaded(project, entry_abs)
             return project, launch
     raise UsageError(not_a_launch_file(project, entry_abs))
 
 
-def _load_errors(project: Project, entry: str) -> list[str]:
-    """The findings that keep ``entry`` from loading, as ``check`` prints them on one line."""
+def ensure_loaded(project: Project, entry: str) -> None:
+    """Raise ``UnloadableLaunch`` with the findings that keep ``entry`` (absolute) from loading,
+    worded as ``check`` words them, when its file could not be parsed."""
+    if project.store.launches.get(entry) is not None:
+        return
     from physai_lint.catalog import load_catalog
-    from physai_lint.report import rel
+    from physai_lint.engine import to_findings
+    from physai_lint.report import one_line, rel
 
-    catalog = load_catalog()
-    lines = []
-    for d in sorted(project.diagnostics, key=lambda d: (d.span.line, d.span.col, d.code)):
-        if d.span.file == entry and d.code.startswith("X"):
-            doc = catalog.get(d.code)
-            name = f" [{doc.name}]" if doc is not None else ""
-            lines.append(f"{rel(entry, project.cwd)}:{d.span.line}:{d.span.col}: {d.code}{name} {d.message}")
-    return lines or [f'{rel(entry, project.cwd)}: the launch file cannot be loaded']
+    found = to_findings([d for d in project.diagnostics if d.span.file == entry and d.code.startswith("X")],
+                        load_catalog(), {})
+    lines = [one_line(f, project.cwd) for f in sorted(found, key=lambda f: (f.span.line, f.span.col, f.code))]
+    raise UnloadableLaunch(lines or [f"{rel(entry, project.cwd)}: the launch file cannot be loaded"])
 
 
 def not_a_launch_file(project: Project, target: str) -> str:

@@ -26,11 +26,10 @@ def compute_plan(opts: CheckOptions, entry: str, cwd: str | None = None) -> tupl
 
             raise UsageError(not_a_launch_file(project, target))
         launch = project.launches[0]
-    elif project.store.launches.get(target) is None:
-        from physai_lint.api import _load_errors
-        from physai_lint.errors import UnloadableLaunch
+    else:
+        from physai_lint.api import ensure_loaded
 
-        raise UnloadableLaunch(_load_errors(project, target))
+        ensure_loaded(project, target)
     graph = build_graph(launch, project.interfaces)
     cache: dict[int, Any] = {}
 

@@ -405,73 +405,58 @@ def load_param_file(path: str, text: str, distro: str = "humble") -> ParamFileMo
     next_event = loader.get_event
     try:
         while (ev := next_event()) is not None:
-            count += 1
-            if count > MAX_EVENTS:
-                p.model.diagnostics.append(Diagnostic(
-                    "X001", _span(path, ev), "file too large to analyse (too many YAML nodes)"))
-                p.model.ok = False
-                break
-            if isinstance(ev, yaml.ScalarEvent):
-                span = _span(path, ev)  # one Span per scalar, shared by both trackers
-                dup.node(ev, True, span)
-                if not p.failed:
-                    try:
+            try:
+                count += 1
+                if count > MAX_EVENTS:
+                    p.model.diagnostics.append(Diagnostic(
+                        "X001", _span(path, ev), "file too large to analyse (too many YAML nodes)"))
+                    p.model.ok = False
+                    break
+                if isinstance(ev, yaml.ScalarEvent):
+                    span = _span(path, ev)  # one Span per scalar, shared by both trackers
+                    dup.node(ev, True, span)
+                    if not p.failed:
                         p.scalar(ev, span)
-                    except _RclError as e:
-                        _fail(p, e)
-            elif isinstance(ev, yaml.MappingStartEvent):
-                dup.node(ev, False)
-                dup.start("map")
-                depth += 1
-                if depth > MAX_DEPTH:
-                    p.model.diagnostics.append(Diagnostic(
-                        "P104", _span(path, ev, end=False),
-                        f"nesting deeper than {MAX_DEPTH} levels"))
-                    p.model.ok = False
-                    break
-                if not p.failed:
-                    try:
+                elif isinstance(ev, yaml.MappingStartEvent):
+                    dup.node(ev, False)
+                    dup.start("map")
+                    depth += 1
+                    if depth > MAX_DEPTH:
+                        p.model.diagnostics.append(Diagnostic(
+                            "P104", _span(path, ev, end=False),
+                            f"nesting deeper than {MAX_DEPTH} levels"))
+                        p.model.ok = False
+                        break
+                    if not p.failed:
                         p.mapping_start(ev)
-                    except _RclError as e:
-                        _fail(p, e)
-            elif isinstance(ev, yaml.MappingEndEvent):
-                dup.end()
-                depth -= 1
-                if not p.failed:
-                    try:
+                elif isinstance(ev, yaml.MappingEndEvent):
+                    dup.end()
+                    depth -= 1
+                    if not p.failed:
                         p.mapping_end(ev)
-                    except _RclError as e:
-                        _fail(p, e)
-            elif isinstance(ev, yaml.SequenceStartEvent):
-                dup.node(ev, False)
-                dup.start("seq")
-                depth += 1
-                if depth > MAX_DEPTH:
-                    p.model.diagnostics.append(Diagnostic(
-                        "P104", _span(path, ev, end=False),
-                        f"nesting deeper than {MAX_DEPTH} levels"))
-                    p.model.ok = False
-                    break
-                if not p.failed:
-                    try:
+                elif isinstance(ev, yaml.SequenceStartEvent):
+                    dup.node(ev, False)
+                    dup.start("seq")
+                    depth += 1
+                    if depth > MAX_DEPTH:
+                        p.model.diagnostics.append(Diagnostic(
+                            "P104", _span(path, ev, end=False),
+                            f"nesting deeper than {MAX_DEPTH} levels"))
+                        p.model.ok = False
+                        break
+                    if not p.failed:
                         p.sequence_start(ev)
-                    except _RclError as e:
-                        _fail(p, e)
-            elif isinstance(ev, yaml.SequenceEndEvent):
-                dup.end()
-                depth -= 1
-                if not p.failed:
-                    try:
+                elif isinstance(ev, yaml.SequenceEndEvent):
+                    dup.end()
+                    depth -= 1
+                    if not p.failed:
                         p.sequence_end(ev)
-                    except _RclError as e:
-                        _fail(p, e)
-            elif isinstance(ev, yaml.AliasEvent):
-                dup.node(ev, False)
-                if not p.failed:
-                    try:
+                elif isinstance(ev, yaml.AliasEvent):
+                    dup.node(ev, False)
+                    if not p.failed:
                         p.alias(ev)
-                    except _RclError as e:
-                        _fail(p, e)
+            except _RclError as e:  # rcl's first error: the handler ran last in its branch
+                _fail(p, e)
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark or exc.context_mark
         line = mark.line + 1 if mark is not None else 1

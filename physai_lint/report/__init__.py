@@ -49,6 +49,11 @@ def _rel(path: str, cwd: str) -> str:
 _rel_abs = functools.lru_cache(maxsize=8192)(_rel)
 
 
+def one_line(f: Finding, cwd: str) -> str:
+    """``path:line:col: CODE [name] message``: a finding on one line."""
+    return f"{rel(f.span.file, cwd)}:{f.span.line}:{f.span.col}: {f.code} [{f.name}] {f.message}"
+
+
 def ordered(report: ReportLike) -> list[Finding]:
     """Findings in output order: file (as shown), line, column, code, message."""
     return sorted(report.findings, key=lambda f: (rel(f.span.file, report.cwd), *f.sort_key()[1:]))

@@ -10,7 +10,7 @@ import xml.etree.ElementTree as ET
 from typing import Any, Mapping
 
 from physai_lint.model.findings import SEVERITY_RANK, Finding
-from physai_lint.report import ReportLike, ordered, rel
+from physai_lint.report import ReportLike, one_line, ordered, rel
 
 
 _NOT_XML = re.compile("[^\t\n\r\x20-\ud7ff\ue000-\ufffd\U00010000-\U0010ffff]")
@@ -22,7 +22,7 @@ def _xml_text(text: str) -> str:
 
 
 def _line(f: Finding, cwd: str) -> str:
-    return _xml_text(f"{rel(f.span.file, cwd)}:{f.span.line}:{f.span.col}: {f.code} [{f.name}] {f.message}")
+    return _xml_text(one_line(f, cwd))
 
 
 def render(report: ReportLike, catalog: Mapping[str, Any], *, fail_on: str = "error", **_: Any) -> str:

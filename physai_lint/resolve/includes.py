@@ -89,8 +89,9 @@ def include(inst: Instantiator, a: ir.Include, scope: Scope) -> None:
         d.name for d in required_missing(lf.actions, passed)}))
     if source not in inst.result.files:
         inst.result.files.append(source)
-    n_decl, n_reads, n_opaque, n_inc = (len(inst.result.declared_args), len(inst.result.config_reads),
-                                        len(inst.result.opaque), len(inst.result.includes))
+    n_decl, n_reads, n_opaque, n_inc, n_open = (
+        len(inst.result.declared_args), len(inst.result.config_reads), len(inst.result.opaque),
+        len(inst.result.includes), len(inst.result.open_reads))
     scope.locals["current_launch_file_directory"] = posixpath.dirname(path)
     scope.locals["current_launch_file_path"] = path
     scope.locals["_owner"] = source
@@ -100,8 +101,8 @@ def include(inst: Instantiator, a: ir.Include, scope: Scope) -> None:
         inst._walk(lf.actions, scope)
     finally:
         inst.frame = fr
-    if len(inst.result.opaque) > n_opaque and a.arguments is not None:
-        rec.declared = None  # something below is unknown: it may read any argument
+    if (len(inst.result.opaque) > n_opaque and a.arguments is not None) or len(inst.result.open_reads) > n_open:
+        rec.declared = None  # something below is unknown, or may read any configuration
     else:
         names = {d.name for d in inst.result.declared_args[n_decl:]}
         names |= {r.name for r in inst.result.config_reads[n_reads:]}

@@ -115,11 +115,9 @@ class Instantiator:
 
     def reads_every_configuration(self, span: Span) -> None:
         """Something at ``span`` may read any launch configuration (a parameter file with
-        ``allow_substs`` whose path is unknown): a read of ``EVERY_CONFIGURATION``, defined, so
-        that no argument passed to an include holding it counts as ignored (L106), and an open
-        read along the chain of files that leads to it, whose declared arguments it may read
-        (L102)."""
-        self.result.config_reads.append(ConfigRead(ir.EVERY_CONFIGURATION, span, True, True, self.frame.active))
+        ``allow_substs`` whose path is unknown): an open read along the chain of files that leads
+        to it. No argument passed to an include holding it counts as ignored (L106,
+        ``resolve/includes.py``), nor one declared along the chain as unused (L102)."""
         self.result.open_reads.append((span, self.frame.chain))
 
     def _on_package(self, name: str, span: Span | None, from_config: bool | str) -> None:

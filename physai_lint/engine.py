@@ -120,9 +120,20 @@ def build_project(opts: CheckOptions, cwd: str | None = None, progress: Any = No
     explicit = set(found.explicit)
     launch_files = list(found.launch_files)
 
+    def read_located(path: str) -> str | None:
+        """A file an OpaqueFunction reads once its path is known, where ``ros2 launch`` would
+        find it: a workspace package's installed file is read from its source."""
+        found = packages.locate(path)
+        return packages.read_text(found.source) if found.status == "ok" and found.source else None
+
+    reader = read_located if hasattr(packages, "locate") and hasattr(packages, "read_text") else None
+
+    def specialize(path: str, action: Any, known: tuple[tuple[Any, str], ...]) -> Any:
+        return store.specialize(path, action, known, reader)
+
     def resolve_quiet(entry: str) -> Any:
         return resolve_launch(entry, dict(opts.launch_args), loader, packages,
-                              explicit_entry=entry in explicit)
+                              explicit_entry=entry in explicit, specialize=specialize)
 
     def resolve(entry: str) -> Any:
         progress.advance()

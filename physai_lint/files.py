@@ -42,6 +42,8 @@ class FileStore:
     cache: Any = None  # a cache.ParseCache, or None
     distro: str = ""  # what Python launch files read as ROS_DISTRO; set by preload
     max_bytes: int = MAX_FILE_BYTES  # larger files are reported (X002's ``max-bytes``), not read
+    # (path, action id, known values) -> an OpaqueFunction evaluated again (``specialize``)
+    specialized: dict[Any, Any] = field(default_factory=dict)
 
     def text(self, path: str) -> str | None:
         if path in self.texts:
@@ -105,6 +107,33 @@ class FileStore:
                 self._store(job, value, ok)
             result = self._accept(job, value)
         self.launches[path] = result
+        return result
+
+    def specialize(self, path: str, action: Any, known: tuple[tuple[Any, str], ...],
+                   reader: Callable[[str], str | None] | None = None) -> Any:
+        """The OpaqueFunction ``action`` of Python launch file ``path`` evaluated again with the
+        strings ``known`` for what it performs (``frontends.python.specialize``), or None; memoised
+        per (file, action, values): an include used twice with the same arguments evaluates once."""
+        key = (path, action.id, known)
+        try:
+            return self.specialized[key]
+        except KeyError:
+            pass
+        except TypeError:  # an unhashable value: not memoised
+            key = None
+        result = None
+        text = self.text(path)
+        if text is not None and launch_format(path, text) == "python":
+            from physai_lint.frontends.python import specialize
+
+            if reader is None:
+                from physai_lint.workspace.index import read_text_file as reader
+            try:
+                result = specialize(path, text, reader, self.distro or None, known, action)
+            except (RecursionError, MemoryError):  # too deep or too large: it stays opaque
+                result = None
+        if key is not None:
+            self.specialized[key] = result
         return result
 
     def param_file(self, path: str, distro: str) -> Any:

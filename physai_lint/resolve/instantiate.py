@@ -30,6 +30,11 @@ if TYPE_CHECKING:
     from physai_lint.workspace import PackageIndex
 
 Loader = Callable[[str], "ir.LaunchFile | None"]
+# (file, the OpaqueAction, its performed values with the strings found for them) -> the action
+# evaluated with them, or None (``files.FileStore.specialize``)
+Specializer = Callable[[str, "ir.OpaqueAction", "tuple[tuple[Any, str], ...]"], "ir.OpaqueAction | None"]
+# OpaqueFunctions evaluated again per entry: each costs a parse of its file (~2-20 ms).
+MAX_SPECIALIZED = 200
 MAX_ACTIONS = 200_000
 # Events that change a lifecycle node's state (an event not known statically may be one)
 _CHANGE_STATE = frozenset({"launch_ros.events.lifecycle.ChangeState", "unknown"})
@@ -78,8 +83,11 @@ def combine(a: bool | None, b: bool | None) -> bool | None:
 
 
 class Instantiator:
-    def __init__(self, loader: Loader, packages: PackageIndex | None, explicit_entry: bool) -> None:
+    def __init__(self, loader: Loader, packages: PackageIndex | None, explicit_entry: bool,
+                 specialize: Specializer | None = None) -> None:
         self.loader = loader
+        self.specialize = specialize
+        self.specialized = 0  # OpaqueFunctions evaluated again with known values (MAX_SPECIALIZED)
         self.packages = packages
         self.explicit_entry = explicit_entry
         self.result: LaunchResult
@@ -242,10 +250,11 @@ class Instantiator:
             fr = replace(self.frame, lost=self._scope_losses(scope))
             self.handlers.append((a, fr, dict(scope.locals)))
         elif isinstance(a, ir.OpaqueAction):
+            if a.reason and a.other and self.specialize is not None and self.specialized < MAX_SPECIALIZED:
+                self._opaque_function(a, scope)
+                return
             if a.reason:
-                self.note_opaque((a.span, a.reason))
-                if self.frame.active is not False:
-                    self.configs_open.add(self.frame.file)  # its actions may set any configuration
+                self._open(a)
             for value in a.other:
                 self.ev.eval(value, scope)
             self._walk(a.actions, scope)
@@ -261,6 +270,36 @@ class Instantiator:
             if self.frame.active is not False:
                 self.ev.env_set.add(name)
             self.ev.eval(a.value, scope)
+
+    def _open(self, a: ir.OpaqueAction) -> None:
+        self.note_opaque((a.span, a.reason))
+        if self.frame.active is not False:
+            self.configs_open.add(self.frame.file)  # its actions may set any configuration
+
+    def _opaque_function(self, a: ir.OpaqueAction, scope: Scope) -> None:
+        """An OpaqueFunction whose body the frontend lost track of, given what it performs
+        (``a.other``): evaluated again with the values found here (``frontends.python.specialize``),
+        as launch runs it with the launch configurations of this moment; opaque if it still cannot
+        be. The values are read once, before either (a read the function makes either way)."""
+        found = tuple((value, text) for value in a.other if (text := self.ev.eval(value, scope)) is not None)
+        done = None
+        if found and self.specialize is not None:
+            try:
+                done = self.specialize(self.frame.file, a, found)
+            except Exception as exc:  # noqa: BLE001 - a crash is a finding (X003), and the function stays opaque
+                from physai_lint.files import internal_error
+
+                self.result.diagnostics.append(internal_error(self.frame.file, "python frontend (OpaqueFunction "
+                                                              "evaluated with its arguments)", exc))
+        if done is None:
+            self._open(a)
+            self._walk(a.actions, scope)
+            return
+        self.specialized += 1
+        for value in done.other:  # what it performs once past the point the first evaluation reached
+            if value not in a.other:
+                self.ev.eval(value, scope)
+        self._walk(done.actions, scope)
 
     # ---- arguments -----------------------------------------------------------------------------
     def _declare(self, a: ir.DeclareArgument, scope: Scope) -> None:
@@ -443,9 +482,12 @@ class Instantiator:
 
 
 def resolve_launch(entry: str, cli_args: dict[str, str], loader: Loader,
-                   packages: PackageIndex | None, explicit_entry: bool = True) -> LaunchResult:
-    """Resolve one entry launch file as ``ros2 launch`` would, with ``NAME:=VALUE`` arguments."""
-    inst = Instantiator(loader, packages, explicit_entry)
+                   packages: PackageIndex | None, explicit_entry: bool = True,
+                   specialize: Specializer | None = None) -> LaunchResult:
+    """Resolve one entry launch file as ``ros2 launch`` would, with ``NAME:=VALUE`` arguments.
+    ``specialize``: evaluates a Python launch file's OpaqueFunction again with the values its
+    substitutions have here (``files.FileStore.specialize``); without it such functions stay opaque."""
+    inst = Instantiator(loader, packages, explicit_entry, specialize)
     try:
         return inst.run(entry, cli_args)
     finally:

@@ -34,7 +34,7 @@ from .evaluator import Abort, Evaluator
 from .facts import call_facts, undefined_names
 from .runtime import Alternatives, LObj, Opaque, UserFunc
 
-__all__ = ["parse_python_launch"]
+__all__ = ["parse_python_launch", "specialize"]
 
 
 def _syntax_error(path: str, text: str, err: BaseException) -> FrontendResult:
@@ -56,16 +56,18 @@ def _syntax_error(path: str, text: str, err: BaseException) -> FrontendResult:
 
 
 def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | None] | None = None,
-                        distro: str | None = None) -> FrontendResult:
+                        distro: str | None = None, known: dict[Any, str] | None = None) -> FrontendResult:
     """Parse and statically evaluate a ``.launch.py`` file into the launch IR.
 
     ``distro`` is what ``os.environ['ROS_DISTRO']``/``os.getenv('ROS_DISTRO')`` read; without it
-    they are unknown like every other environment variable."""
+    they are unknown like every other environment variable. ``known``: what substitutions the
+    OpaqueFunctions perform give (``specialize``); without it they stay symbolic."""
     try:
         tree = ast.parse(text, filename=path)
     except (SyntaxError, ValueError, RecursionError, MemoryError) as err:
         return _syntax_error(path, text, err)
     ev = Evaluator(path, text, read_file, distro)
+    ev.known = dict(known or {})
     convert_values.set_recorder(ev)
     spans = ev.main.spans
     result: Any = None
@@ -165,3 +167,40 @@ def _module_functions(body: list[ast.stmt]) -> set[str]:
 def _within(span: Span, ranges: list[tuple[int, int]]) -> bool:
     """``span`` starts on a line of one of ``ranges`` (code the evaluation never ran)."""
     return any(a <= span.line <= b for a, b in ranges)
+
+
+def specialize(path: str, text: str, read_file: Callable[[str], str | None] | None, distro: str | None,
+               known: tuple[tuple[Any, str], ...], action: OpaqueAction) -> OpaqueAction | None:
+    """The OpaqueFunction ``action`` of this file (an ``OpaqueAction`` whose body the evaluator lost
+    track of) evaluated again, its performed substitutions (``action.other``) given the strings in
+    ``known``: what ``launch`` itself does when the function runs, with the launch configurations
+    of that moment (``OpaqueFunction.execute``: ``self.__function(context, ...)``), here those the
+    resolver found. A loop over a list read from a launch argument (Autoware's
+    ``camera_namespaces:=[camera6, camera7]``) or from a file it names then unrolls.
+
+    Returns the action evaluated (``reason`` empty), or None when it still cannot be, or is not
+    found again at the same place (the id and the span of the call both match)."""
+    if not known:
+        return None
+    res = parse_python_launch(path, text, read_file, distro, known=dict(known))
+    if res.launch is None:
+        return None
+    found = _find(res.launch.actions, action.id, 0)
+    if isinstance(found, OpaqueAction) and not found.reason and found.span == action.span:
+        return found
+    return None
+
+
+def _find(actions: tuple[Any, ...], action_id: str, depth: int) -> Any:
+    """The action of id ``action_id`` among ``actions`` and the actions nested in them."""
+    if depth > 64:
+        return None
+    for a in actions:
+        if a.id == action_id:
+            return a
+        nested = getattr(a, "actions", None)
+        if isinstance(nested, tuple) and nested:
+            found = _find(nested, action_id, depth + 1)
+            if found is not None:
+                return found
+    return None

@@ -14,7 +14,7 @@ import yaml
 
 from physai_lint.model.launch import EVERY_CONFIGURATION, ConcatFact
 from physai_lint.model.span import Span
-from physai_lint.model.values import FindPackage, LaunchConfig, StrMethod, Text
+from physai_lint.model.values import FindPackage, LaunchConfig, StrMethod, Text, Value
 
 from . import api, bounds, builtin_calls, classes, symbolic
 from .convert_values import to_value
@@ -105,7 +105,7 @@ def subscript(ev: Evaluator, obj: Any, key: Any, span: Span) -> Any:
         return env_read(ev, key, span)
     if isinstance(obj, LaunchConfigsSym):
         if isinstance(key, str):
-            return SymStr((LaunchConfig((Text(str(key), span),), None, span),))
+            return _peeked(ev, (LaunchConfig((Text(str(key), span),), None, span),))
         ev.escaped.add(EVERY_CONFIGURATION)  # a name known only at launch time: any of them
     if isinstance(obj, (dict, list, tuple, str)) and not isinstance(key, Opaque):
         try:
@@ -350,6 +350,9 @@ def call_ref(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any], 
         return Opaque("Path of a value that cannot be evaluated statically", span)
     if qual in ("yaml.safe_load", "yaml.load", "yaml.full_load", "json.load", "json.loads"):
         return load_data(ev, qual, args[0] if args else kwargs.get("stream"), span)
+    if qual in ("itertools.chain", "itertools.chain.from_iterable") and not kwargs:
+        return _chain(ev, args if qual == "itertools.chain" else iterate(ev, args[0]) if len(args) == 1 else None,
+                      span)
     if qual in ("os.getenv", "os.environ.get"):
         return env_read(ev, args[0] if args else kwargs.get("key"), span)
     if qual.startswith("os.environ") or qual == "os.getcwd":
@@ -389,11 +392,32 @@ def load_data(ev: Evaluator, qual: str, src: Any, span: Span) -> Any:
 _SYM_STR_METHODS = frozenset({"lower", "upper", "casefold", "strip", "lstrip", "rstrip"})
 
 
-def _performed(ev: Evaluator, subst: Any, span: Span) -> SymStr:
+def _performed(ev: Evaluator, subst: Any, span: Span) -> SymStr | str:
     """What substituting ``subst`` now gives (``lc.perform(context)``), noted as performed: the
     OpaqueFunction running this reads its launch configurations wherever the result goes."""
     value = to_value(subst, span)
     ev.performed.append(value)
+    return _known_or_symbolic(ev, value)
+
+
+def _peeked(ev: Evaluator, value: Value) -> SymStr | str:
+    """``context.launch_configurations.get(name)`` / ``[name]``: like ``_performed``, but noted
+    apart (``Recorder.peeked``): an unset name gives None or a KeyError there, not the failure
+    of a substitution, so the read is not one that must find the configuration set."""
+    ev.peeked.append(value)
+    return _known_or_symbolic(ev, value)
+
+
+def _known_or_symbolic(ev: Evaluator, value: Value) -> SymStr | str:
+    """The string the resolver found for ``value`` where the function is evaluated again with
+    the launch configurations of one include (``specialize``); else the value, symbolically."""
+    if ev.known:
+        try:
+            text = ev.known.get(value)
+        except TypeError:  # an unhashable part: not looked up
+            text = None
+        if text is not None:
+            return text
     return SymStr(value)
 
 
@@ -423,7 +447,7 @@ def call_method(ev: Evaluator, obj: Any, name: str, args: list[Any], kwargs: dic
     if isinstance(obj, LaunchConfigsSym):
         if name == "get" and args and isinstance(args[0], str):
             default = to_value(args[1], span) if len(args) > 1 and args[1] is not None else None
-            return SymStr((LaunchConfig((Text(str(args[0]), span),), default, span),))
+            return _peeked(ev, (LaunchConfig((Text(str(args[0]), span),), default, span),))
         ev.escaped.add(EVERY_CONFIGURATION)  # items(), values(), copy(), get(name unknown): any
         return Opaque(f"launch_configurations.{name}", span)
     if isinstance(obj, FileHandle):
@@ -472,6 +496,21 @@ def call_method(ev: Evaluator, obj: Any, name: str, args: list[Any], kwargs: dic
     return Opaque(f'method "{name}" cannot be evaluated statically', span)
 
 
+def _chain(ev: Evaluator, parts: list[Any] | None, span: Span) -> Any:
+    """``itertools.chain(*parts)`` of known iterables, as a list (what the file iterates or
+    ``list()``s); unknown if any part is."""
+    out: list[Any] = []
+    for part in parts if parts is not None else [Opaque("chain of an unknown iterable", span)]:
+        items = iterate(ev, part)
+        if items is None:
+            ev.escape([part])
+            return Opaque(part.reason if isinstance(part, Opaque) else "chain of an unknown iterable", span)
+        out.extend(items)
+        if len(out) > bounds.MAX_WEIGHT:
+            return Opaque("chain makes the value too large to analyse", span)
+    return out
+
+
 def _safe(fn: Any, args: list[Any], kwargs: dict[str, Any], span: Span) -> Any:
     try:
         return fn(*args, **kwargs)
@@ -500,9 +539,10 @@ def make_lobj(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any],
         fargs = obj.arg(1, "args") or []
         fkwargs = obj.arg(2, "kwargs") or {}
         if isinstance(fn, UserFunc) and isinstance(fargs, (list, tuple)) and isinstance(fkwargs, dict):
-            start = len(ev.performed)
+            start, peeks = len(ev.performed), len(ev.peeked)
             obj.extra["result"] = call_user(ev, fn, [ContextSym(), *fargs], dict(fkwargs), span)
             obj.extra["performed"] = tuple(ev.performed[start:])
+            obj.extra["peeked"] = tuple(ev.peeked[peeks:])
         else:
             obj.extra["result"] = Opaque("OpaqueFunction with a function that cannot be evaluated statically", span)
     elif short in _HANDLER_KEYS:

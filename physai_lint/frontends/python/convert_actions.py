@@ -226,9 +226,12 @@ class ActionBuilder:
             return L.Shutdown(i, s, cond, opt_value(o, -1, "reason"))
         if n == "OpaqueFunction":
             result = o.extra.get("result")
-            if isinstance(result, Opaque):
-                return L.OpaqueAction(i, s, cond, result.reason)
             performed = tuple(v for v in o.extra.get("performed", ()) if v)
+            if isinstance(result, Opaque):
+                # What it substituted before the evaluation lost track: the resolver reads these,
+                # and evaluates the function again with their values (``frontends.python.specialize``).
+                peeked = tuple(v for v in o.extra.get("peeked", ()) if v)
+                return L.OpaqueAction(i, s, cond, result.reason, (), _distinct(performed + peeked))
             return L.OpaqueAction(i, s, cond, "", self.actions(result, s), performed)
         if n == "ResetLaunchConfigurations":
             lcs = o.arg(0, "launch_configurations")
@@ -446,3 +449,12 @@ class ActionBuilder:
         if isinstance(matcher, LObj) and matcher.args and isinstance(matcher.args[0], LObj):
             target_id = self.id_of(matcher.args[0])
         return L.EmitEvent(i, s, cond, e.qual, target_id)
+
+
+def _distinct(values: tuple[Any, ...]) -> tuple[Any, ...]:
+    """``values`` without repeats, in order (compared by equality: a value may not hash)."""
+    out: list[Any] = []
+    for v in values:
+        if v not in out:
+            out.append(v)
+    return tuple(out)

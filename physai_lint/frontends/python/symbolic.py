@@ -29,6 +29,11 @@ class Recorder:
         # Values substituted eagerly (``lc.perform(context)``): read when the OpaqueFunction runs,
         # wherever the result goes.
         self.performed: list[Value] = []
+        # ``context.launch_configurations.get(name)`` / ``[name]`` read the same way (``_peeked``).
+        self.peeked: list[Value] = []
+        # What the resolver found for performed values, when a function is evaluated again for one
+        # include (``frontends.python.specialize``): there they are these strings.
+        self.known: dict[Value, str] = {}
         # Launch configurations handed to code the evaluator cannot follow (a library's builder,
         # an unknown function): that code may read them.
         self.escaped: set[str] = set()

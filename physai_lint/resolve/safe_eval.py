@@ -57,7 +57,7 @@ _MATH_CONSTS = {"pi": math.pi, "e": math.e, "tau": math.tau, "inf": math.inf, "n
 def _size(value: Any) -> int:
     if isinstance(value, int) and not isinstance(value, bool):
         return max(1, value.bit_length() * 30103 // 100000)  # decimal digits
-    if isinstance(value, (str, list, tuple, dict)):
+    if isinstance(value, (str, list, tuple, dict, set, frozenset)):
         return len(value)
     return 1
 
@@ -76,6 +76,8 @@ def _deep_size(value: Any, budget: int) -> int:
     """Number of scalars inside ``value`` (shared sub-lists counted each time), capped."""
     if isinstance(value, dict):
         value = [*value.keys(), *value.values()]
+    if isinstance(value, (set, frozenset)):
+        value = list(value)
     if not isinstance(value, (list, tuple)):
         return _size(value)
     total = 0
@@ -89,13 +91,54 @@ def _deep_size(value: Any, budget: int) -> int:
 def _str(*args: Any) -> str:
     if args and _deep_size(args[0], MAX_ELEMENTS) > MAX_ELEMENTS // 10:
         raise _Unknown("str() of a huge value")
+    if args and isinstance(args[0], (set, frozenset)) and len(args[0]) > 1:
+        raise _Unknown("str() of a set: its order depends on the interpreter's hash seed")
     return str(*args)
+
+
+def _items(value: Any) -> list[Any]:
+    """The items of an iterable ``list()``/``set()``/``sorted()`` take; a set's in sorted order (one
+    order Python may give: which one depends on the hash seed, and the linter's output must not)."""
+    if isinstance(value, (set, frozenset)):
+        try:
+            return sorted(value)
+        except TypeError:
+            raise _Unknown("items of a set of mixed types") from None
+    if isinstance(value, dict):
+        return list(value)
+    if isinstance(value, (str, list, tuple)):
+        return list(value)
+    raise _Unknown("items of a non-iterable")
+
+
+def _list(*args: Any) -> list[Any]:
+    return _items(args[0]) if args else []
+
+
+def _tuple(*args: Any) -> tuple[Any, ...]:
+    return tuple(_items(args[0])) if args else ()
+
+
+def _set(*args: Any) -> set[Any]:
+    try:
+        return set(_items(args[0])) if args else set()
+    except TypeError:  # unhashable items
+        raise _Unknown("set of unhashable items") from None
+
+
+def _sorted(value: Any, reverse: bool = False) -> list[Any]:
+    return sorted(_items(value), reverse=bool(reverse))
 
 
 _BUILTINS: dict[str, Callable[..., Any]] = {
     "len": _len, "str": _str, "int": int, "float": float, "bool": bool, "abs": abs,
-    "min": min, "max": max, "round": round,
+    "min": min, "max": max, "round": round, "list": _list, "tuple": _tuple, "set": _set,
+    "sorted": _sorted,
 }
+# Methods of a set: what Autoware's pose_twist_estimator.launch.xml computes its pose sources with
+# (``list(set('$(var pose_source)'.split('_')).intersection([...]))``).
+_SET_METHODS = frozenset({"intersection", "union", "difference", "symmetric_difference", "issubset",
+                          "issuperset", "isdisjoint"})
 
 
 class _Interp:
@@ -240,6 +283,12 @@ class _Interp:
                 if "math" in self.modules and func.attr in _MATH_FUNCS:
                     return getattr(math, func.attr)  # type: ignore[no-any-return]
                 raise _Unknown(f"call of math.{func.attr}")
+            if func.attr in _SET_METHODS:
+                target = self.run(func.value, d)
+                if isinstance(target, (set, frozenset)):
+                    method = getattr(target, func.attr)
+                    return lambda *others: method(*(_items(o) for o in others))
+                raise _Unknown(f"call of .{func.attr}() of a non-set")
             if func.attr in _STR_METHODS:
                 target = self.run(func.value, d)
                 if isinstance(target, str):

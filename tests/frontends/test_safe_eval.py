@@ -50,6 +50,24 @@ def test_bounded(expr: str) -> None:
     assert isinstance(safe_eval(expr), SafeEvalUnknown)
 
 
+@pytest.mark.parametrize("expr, expected", [
+    # Autoware's pose_twist_estimator.launch.xml: the pose sources named in pose_source
+    ("list(set('ndt_yabloc'.split('_')).intersection(['ndt', 'yabloc', 'eagleye']))", ["ndt", "yabloc"]),
+    ("len(list(set('ndt'.split('_')).intersection(['ndt', 'artag']))) > 1", False),
+    ("sorted(set([3, 1, 2]).union([0]), reverse=True)", [3, 2, 1, 0]),
+    ("tuple(set('ba'))", ("a", "b")), ("set('ab').issubset('abc')", True), ("list('ab')", ["a", "b"]),
+])
+def test_sets_evaluate_in_one_order(expr: str, expected: object) -> None:
+    # a set's order is the hash seed's in Python: here always sorted, so the output never varies
+    assert safe_eval(expr) == expected
+
+
+@pytest.mark.parametrize("expr", ["str(set('ab'))", "set([[1]])", "sorted(set([1, 'a']))", "set('a').pop()",
+                                  "'a'.intersection('b')", "list(set('ab'), key=len)"])
+def test_sets_refused_where_their_order_or_type_shows(expr: str) -> None:
+    assert isinstance(safe_eval(expr), SafeEvalUnknown)
+
+
 def test_math_module_needed_for_math_names() -> None:
     assert isinstance(safe_eval("math.pi", modules=()), SafeEvalUnknown)
     assert isinstance(safe_eval("sqrt(4)", modules=("os",)), SafeEvalUnknown)

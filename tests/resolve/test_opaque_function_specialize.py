@@ -146,3 +146,18 @@ def test_a_crash_while_evaluating_again_is_a_finding_not_a_traceback(demo_findin
     found = demo_findings({"launch/cams.launch.py": CAMERAS}, "launch/cams.launch.py", "X003")
     assert [message for _, message in found] == [
         "internal error in python frontend (OpaqueFunction evaluated with its arguments): RuntimeError: boom"]
+
+
+def test_eval_of_set_operations_decides_groups(demo_graph):
+    # Autoware's pose_twist_estimator.launch.xml picks its pose estimators this way
+    launch = textwrap.dedent('''\
+        <launch>
+          <arg name="pose_source" default="ndt_yabloc"/>
+          <let name="srcs" value="$(eval &quot;list(set('$(var pose_source)'.split('_')).intersection(['ndt', 'yabloc', 'eagleye']))&quot;)"/>
+          <group if="$(eval &quot;'ndt' in $(var srcs)&quot;)"><node pkg="demo" exec="x" name="ndt"/></group>
+          <group if="$(eval &quot;'eagleye' in $(var srcs)&quot;)"><node pkg="demo" exec="x" name="eagleye"/></group>
+          <group if="$(eval &quot;len($(var srcs)) > 1&quot;)"><node pkg="demo" exec="x" name="arbiter"/></group>
+        </launch>
+        ''')
+    nodes = demo_graph({"launch/pose.launch.xml": launch}, "launch/pose.launch.xml")
+    assert {name: n["active"] for name, n in nodes.items()} == {"ndt": True, "eagleye": False, "arbiter": True}

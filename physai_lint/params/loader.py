@@ -417,9 +417,10 @@ def load_param_file(path: str, text: str, distro: str = "humble") -> ParamFileMo
                     dup.node(ev, True, span)
                     if not p.failed:
                         p.scalar(ev, span)
-                elif isinstance(ev, yaml.MappingStartEvent):
+                elif isinstance(ev, (yaml.MappingStartEvent, yaml.SequenceStartEvent)):
+                    mapping = isinstance(ev, yaml.MappingStartEvent)
                     dup.node(ev, False)
-                    dup.start("map")
+                    dup.start("map" if mapping else "seq")
                     depth += 1
                     if depth > MAX_DEPTH:
                         p.model.diagnostics.append(Diagnostic(
@@ -428,24 +429,15 @@ def load_param_file(path: str, text: str, distro: str = "humble") -> ParamFileMo
                         p.model.ok = False
                         break
                     if not p.failed:
-                        p.mapping_start(ev)
+                        if mapping:
+                            p.mapping_start(ev)
+                        else:
+                            p.sequence_start(ev)
                 elif isinstance(ev, yaml.MappingEndEvent):
                     dup.end()
                     depth -= 1
                     if not p.failed:
                         p.mapping_end(ev)
-                elif isinstance(ev, yaml.SequenceStartEvent):
-                    dup.node(ev, False)
-                    dup.start("seq")
-                    depth += 1
-                    if depth > MAX_DEPTH:
-                        p.model.diagnostics.append(Diagnostic(
-                            "P104", _span(path, ev, end=False),
-                            f"nesting deeper than {MAX_DEPTH} levels"))
-                        p.model.ok = False
-                        break
-                    if not p.failed:
-                        p.sequence_start(ev)
                 elif isinstance(ev, yaml.SequenceEndEvent):
                     dup.end()
                     depth -= 1

@@ -283,7 +283,7 @@ class Instantiator:
         be. The values are read once, before either (a read the function makes either way)."""
         found = tuple((value, text) for value in a.other if (text := self.ev.eval(value, scope)) is not None)
         done = None
-        if found and self.specialize is not None:
+        if found and self.specialize is not None:  # (set: the caller checked; for the type checker)
             try:
                 done = self.specialize(self.frame.file, a, found)
             except Exception as exc:  # noqa: BLE001 - a crash is a finding (X003), and the function stays opaque

@@ -67,7 +67,7 @@ def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | N
     except (SyntaxError, ValueError, RecursionError, MemoryError) as err:
         return _syntax_error(path, text, err)
     ev = Evaluator(path, text, read_file, distro)
-    ev.known = dict(known or {})
+    ev.known = known or {}
     convert_values.set_recorder(ev)
     spans = ev.main.spans
     result: Any = None

@@ -289,6 +289,10 @@ class OpaqueAction(ActionBase):
     # What the OpaqueFunction's body substituted itself (``lc.perform(context)``): the launch
     # configurations it reads when it runs.
     other: tuple[Value, ...] = ()
+    # For a body evaluated (``reason`` '') with values lost to ``if``s or conditional expressions
+    # that a launch configuration it substitutes or looks up may decide: those (``other`` and the
+    # looked-up ones). The resolver evaluates the body again with their strings (as for ``reason``).
+    again: tuple[Value, ...] = ()
 
 
 Action = Union[

@@ -10,10 +10,11 @@ from __future__ import annotations
 
 import posixpath
 from collections.abc import Callable
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field, fields, is_dataclass, replace
 from typing import TYPE_CHECKING, Any
 
 from physai_lint.model import launch as ir
+from physai_lint.model import values as vals
 from physai_lint.model.span import Span
 from physai_lint.resolve import names
 from physai_lint.resolve.evaluate import Evaluator, Scope
@@ -250,7 +251,8 @@ class Instantiator:
             fr = replace(self.frame, lost=self._scope_losses(scope))
             self.handlers.append((a, fr, dict(scope.locals)))
         elif isinstance(a, ir.OpaqueAction):
-            if a.reason and a.other and self.specialize is not None and self.specialized < MAX_SPECIALIZED:
+            if (a.reason and a.other or a.again) and self.specialize is not None \
+                    and self.specialized < MAX_SPECIALIZED:
                 self._opaque_function(a, scope)
                 return
             if a.reason:
@@ -278,10 +280,13 @@ class Instantiator:
 
     def _opaque_function(self, a: ir.OpaqueAction, scope: Scope) -> None:
         """An OpaqueFunction whose body the frontend lost track of, given what it performs
-        (``a.other``): evaluated again with the values found here (``frontends.python.specialize``),
-        as launch runs it with the launch configurations of this moment; opaque if it still cannot
-        be. The values are read once, before either (a read the function makes either way)."""
-        found = tuple((value, text) for value in a.other if (text := self.ev.eval(value, scope)) is not None)
+        (``a.other``), or whose body lost values a launch configuration may decide (``a.again``):
+        evaluated again with the values found here (``frontends.python.specialize``), as launch runs
+        it with the launch configurations of this moment. If it cannot be, the first evaluation
+        stands: opaque, or its actions. The values are read once, before either (a read the
+        function makes either way)."""
+        values = a.other if a.reason else a.again
+        found = tuple((value, text) for value in values if (text := self.ev.eval(value, scope)) is not None)
         done = None
         if found and self.specialize is not None:  # (set: the caller checked; for the type checker)
             try:
@@ -292,14 +297,24 @@ class Instantiator:
                 self.result.diagnostics.append(internal_error(self.frame.file, "python frontend (OpaqueFunction "
                                                               "evaluated with its arguments)", exc))
         if done is None:
-            self._open(a)
+            if a.reason:
+                self._open(a)
             self._walk(a.actions, scope)
             return
         self.specialized += 1
         for value in done.other:  # what it performs once past the point the first evaluation reached
-            if value not in a.other:
+            if value not in values:
                 self.ev.eval(value, scope)
         self._walk(done.actions, scope)
+        # What the first evaluation's actions read that these do not: reads in the branches these
+        # values did not take, which launch makes under other arguments; kept as reads of
+        # inactive actions are (an argument only they read is not unused, L102).
+        taken = {name for name, _ in _config_reads(done.actions)}
+        for name, config in _config_reads(a.actions):
+            if name not in taken and config.span is not None:
+                self.result.config_reads.append(ConfigRead(name, config.span, True, config.default is not None, False))
+                for arg in self.declared_by_name.get(name, ()):
+                    arg.reads += 1
 
     # ---- arguments -----------------------------------------------------------------------------
     def _declare(self, a: ir.DeclareArgument, scope: Scope) -> None:
@@ -479,6 +494,36 @@ class Instantiator:
         self.result.opaque.append(part)
         if self.frame.active is False:
             self.result.inactive_opaque.append(part)
+
+
+def _config_reads(root: Any) -> list[tuple[str, vals.LaunchConfig]]:
+    """The launch configurations of literal name that the actions (or values) ``root`` read,
+    with their substitutions, in the order of a depth-first walk through the IR's dataclasses."""
+    out: list[tuple[str, vals.LaunchConfig]] = []
+    stack = [root]
+    while stack:
+        obj = stack.pop()
+        if isinstance(obj, vals.LaunchConfig):
+            if len(obj.name) == 1 and isinstance(obj.name[0], vals.Text):
+                out.append((obj.name[0].text, obj))
+            stack.extend((obj.name, obj.default))
+        elif isinstance(obj, (tuple, list)):
+            stack.extend(reversed(obj))
+        elif isinstance(obj, dict):
+            stack.extend(reversed([*obj.keys(), *obj.values()]))
+        elif is_dataclass(obj) and not isinstance(obj, (Span, type)):
+            stack.extend(getattr(obj, f) for f in reversed(_field_names(type(obj))))
+    return out
+
+
+_FIELD_NAMES: dict[type, tuple[str, ...]] = {}
+
+
+def _field_names(cls: type) -> tuple[str, ...]:
+    names_ = _FIELD_NAMES.get(cls)
+    if names_ is None:
+        names_ = _FIELD_NAMES[cls] = tuple(f.name for f in fields(cls))
+    return names_
 
 
 def resolve_launch(entry: str, cli_args: dict[str, str], loader: Loader,

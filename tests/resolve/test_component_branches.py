@@ -54,13 +54,13 @@ def _components(tmp_path, demo_package, **args):
 
 
 def test_only_the_selected_branch_is_loaded(tmp_path, demo_package):
-    assert _components(tmp_path, demo_package) == [("demo::Compare", True), ("demo::Env", "unknown"),
-                                                   ("demo::Plain", False)]
-    assert _components(tmp_path, demo_package, mode="plain") == [("demo::Compare", False), ("demo::Env", "unknown"),
-                                                                 ("demo::Plain", True)]
-    # the branch condition is and-ed with the component's own condition
+    # the function is evaluated again with the arguments' values (as launch runs it): the branch
+    # not taken makes no component at all; the one on the environment stays undecided
+    assert _components(tmp_path, demo_package) == [("demo::Compare", True), ("demo::Env", "unknown")]
+    assert _components(tmp_path, demo_package, mode="plain") == [("demo::Env", "unknown"), ("demo::Plain", True)]
+    # the component's own condition still applies
     assert _components(tmp_path, demo_package, mode="plain", plain="false") == [
-        ("demo::Compare", False), ("demo::Env", "unknown"), ("demo::Plain", False)]
+        ("demo::Env", "unknown"), ("demo::Plain", False)]
 
 
 def test_no_duplicate_component_across_exclusive_branches(tmp_path, demo_package):

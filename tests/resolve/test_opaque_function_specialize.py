@@ -161,3 +161,60 @@ def test_eval_of_set_operations_decides_groups(demo_graph):
         ''')
     nodes = demo_graph({"launch/pose.launch.xml": launch}, "launch/pose.launch.xml")
     assert {name: n["active"] for name, n in nodes.items()} == {"ndt": True, "eagleye": False, "arbiter": True}
+
+
+LIDAR = textwrap.dedent('''\
+    from launch import LaunchDescription
+    from launch.actions import DeclareLaunchArgument, OpaqueFunction
+    from launch.substitutions import LaunchConfiguration
+    from launch_ros.actions import ComposableNodeContainer
+    from launch_ros.descriptions import ComposableNode
+
+
+    def lidar_make(model):
+        if model[:6].lower() == "pandar":
+            return "Hesai"
+        elif model.lower() in ["helios", "bpearl"]:
+            return "Robosense"
+        return "Velodyne"
+
+
+    def setup(context):
+        make = lidar_make(LaunchConfiguration("sensor_model").perform(context))
+        driver = ComposableNode(package="demo", plugin=make + "Wrapper", name=make.lower() + "_driver")
+        filters = [ComposableNode(package="demo", plugin="demo::Filter", name="filter")]
+        if LaunchConfiguration("crop").perform(context) == "true":
+            filters.append(ComposableNode(package="demo", plugin="demo::Crop", name="crop"))
+        return [ComposableNodeContainer(name="lidar", namespace="", package="rclcpp_components",
+                                        executable="component_container", composable_node_descriptions=[driver, *filters])]
+
+
+    def generate_launch_description():
+        return LaunchDescription([
+            DeclareLaunchArgument("sensor_model", default_value="Pandar64"),
+            DeclareLaunchArgument("crop", default_value="false"),
+            OpaqueFunction(function=setup),
+        ])
+    ''')
+
+
+def test_a_function_that_branches_on_what_it_performs_is_evaluated_with_its_values(demo_package, tmp_path):
+    # nebula_node_container.launch.py (Autoware's sensor kits): the body evaluates at parse time,
+    # but the driver's name hangs on an ``if`` over a performed argument, and so does a component;
+    # evaluated again with the include's values, launch's names and components come out
+    files = {"launch/lidar.launch.py": LIDAR}
+    assert fqns(demo_package, tmp_path, files, "launch/lidar.launch.py") == ["/filter", "/hesai_driver", "/lidar"]
+    assert fqns(demo_package, tmp_path, files, "launch/lidar.launch.py", sensor_model="VLP16", crop="true") == \
+        ["/crop", "/filter", "/lidar", "/velodyne_driver"]
+
+
+def test_a_branch_on_a_value_unknown_at_resolution_stays_undecided(demo_package, tmp_path):
+    # the model comes from the environment: the driver's name stays unknown (no name invented);
+    # the other argument is known, and decides its own branch (no crop component)
+    launch = LIDAR.replace('default_value="Pandar64"', 'default_value=EnvironmentVariable("MODEL")').replace(
+        "LaunchConfiguration\n", "LaunchConfiguration, EnvironmentVariable\n")
+    path = str(demo_package({"launch/lidar.launch.py": launch}) / "launch/lidar.launch.py")
+    opts = CheckOptions(paths=[path], workspace=str(tmp_path))
+    nodes = json.loads(api.graph(opts, path, "json"))["nodes"]
+    assert sorted((n["fqn"], n["active"]) for n in nodes if n["fqn"]) == [("/filter", True), ("/lidar", True)]
+    assert [(n["package"], n["active"]) for n in nodes if not n["fqn"]] == [("demo", True)]  # the driver

@@ -539,10 +539,11 @@ def make_lobj(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any],
         fargs = obj.arg(1, "args") or []
         fkwargs = obj.arg(2, "kwargs") or {}
         if isinstance(fn, UserFunc) and isinstance(fargs, (list, tuple)) and isinstance(fkwargs, dict):
-            start, peeks = len(ev.performed), len(ev.peeked)
+            start, peeks, undecided = len(ev.performed), len(ev.peeked), ev.undecided
             obj.extra["result"] = call_user(ev, fn, [ContextSym(), *fargs], dict(fkwargs), span)
             obj.extra["performed"] = tuple(ev.performed[start:])
             obj.extra["peeked"] = tuple(ev.peeked[peeks:])
+            obj.extra["undecided"] = ev.undecided > undecided
         else:
             obj.extra["result"] = Opaque("OpaqueFunction with a function that cannot be evaluated statically", span)
     elif short in _HANDLER_KEYS:

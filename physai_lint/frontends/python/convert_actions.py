@@ -232,7 +232,10 @@ class ActionBuilder:
                 # and evaluates the function again with their values (``frontends.python.specialize``).
                 peeked = tuple(v for v in o.extra.get("peeked", ()) if v)
                 return L.OpaqueAction(i, s, cond, result.reason, (), _distinct(performed + peeked))
-            return L.OpaqueAction(i, s, cond, "", self.actions(result, s), performed)
+            # Values lost on the way (an ``if`` over a performed string): evaluated again likewise.
+            again = _distinct(performed + tuple(v for v in o.extra.get("peeked", ()) if v)) \
+                if o.extra.get("undecided") else ()
+            return L.OpaqueAction(i, s, cond, "", self.actions(result, s), performed, again)
         if n == "ResetLaunchConfigurations":
             lcs = o.arg(0, "launch_configurations")
             keep = tuple((to_value(k, s), to_value(v, s)) for k, v in lcs.items()) if isinstance(lcs, dict) else None

@@ -347,6 +347,7 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
             tags = (CondTag(Condition(kinds[0], test.value, span, "if")),
                     CondTag(Condition(kinds[1], test.value, span, "else")))
         else:
+            self.undecided += 1
             # Both branches are kept, as launch-time conditions are: what they create gets a condition
             # whose value is unknown (active: unknown), "if" for the body and "unless" for the else.
             reason = test.reason if isinstance(test, Opaque) else "condition cannot be evaluated statically"

@@ -202,7 +202,10 @@ class ExpressionsMixin:
         test = self.ev(n.test, scope)
         t = self.tested(test, n.test, scope)
         if t is None:
-            return symbolic.if_else(self, test, self.ev(n.body, scope), self.ev(n.orelse, scope), self.span(n, scope))
+            out = symbolic.if_else(self, test, self.ev(n.body, scope), self.ev(n.orelse, scope), self.span(n, scope))
+            if not isinstance(test, SymBool) or isinstance(out, Opaque):
+                self.undecided += 1  # a value lost (``Recorder.undecided``)
+            return out
         return self.ev(n.body if t else n.orelse, scope)
 
     def _elts(self, elts: list[ast.expr], scope: Scope) -> tuple[list[Any], list[Span]] | None:

@@ -31,6 +31,10 @@ class Recorder:
         self.performed: list[Value] = []
         # ``context.launch_configurations.get(name)`` / ``[name]`` read the same way (``_peeked``).
         self.peeked: list[Value] = []
+        # ``if``s and conditional expressions decided neither way by a value that is not a launch
+        # condition (``make = "Hesai" if model[:6] == "pandar" else ...``): an OpaqueFunction body
+        # that counted some lost values its performed substitutions may decide (``convert_actions``).
+        self.undecided = 0
         # What the resolver found for performed values, when a function is evaluated again for one
         # include (``frontends.python.specialize``): there they are these strings.
         self.known: dict[Value, str] = {}

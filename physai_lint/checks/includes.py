@@ -28,6 +28,11 @@ def include_missing(ctx: CheckContext) -> Iterator[Diagnostic]:
             yield Diagnostic("L105", inc.span, msg, help=fix, key=inc.target or "")
 
 
+# How many of an included file's arguments an L106 message lists (the did-you-mean hint names the
+# close ones among all of them).
+_LISTED = 12
+
+
 @rule("L106", "include-undeclared-argument")
 def include_undeclared(ctx: CheckContext) -> Iterator[Diagnostic]:
     seen: set[object] = set()
@@ -41,7 +46,9 @@ def include_undeclared(ctx: CheckContext) -> Iterator[Diagnostic]:
                     continue
                 seen.add((span, name))
                 hint = suggestion(name, inc.declared)
-                declared = ", ".join(f'"{d}"' for d in inc.declared) or "no arguments"
+                declared = ", ".join(f'"{d}"' for d in inc.declared[:_LISTED]) or "no arguments"
+                if len(inc.declared) > _LISTED:  # Autoware's perception.launch.xml: 400 of them
+                    declared += f" and {len(inc.declared) - _LISTED} more"
                 yield Diagnostic(
                     "L106", span,  # type: ignore[arg-type]
                     f'argument "{name}" is passed to "{target}", which never declares or reads it '

@@ -151,3 +151,22 @@ def test_l102_an_unknown_allow_substs_file_reads_along_its_chain_only(demo_findi
     found = demo_findings({"launch/inner.launch.xml": INNER_XML, "launch/sibling.launch.xml": sibling,
                            "launch/outer.launch.xml": outer}, "launch/outer.launch.xml", "L102")
     assert [m for _, m in found] == ['launch argument "never_read" is declared but never read']
+
+
+def test_a_long_list_of_arguments_is_cut_short(demo_findings) -> None:
+    # Autoware's perception.launch.xml declares or reads some 400 names: the message lists a
+    # dozen, counts the rest, and the did-you-mean hint still searches all of them
+    names = [f"arg_{i:02d}" for i in range(30)]
+    declares = "".join(f"    DeclareLaunchArgument('{n}', default_value='x'),\n" for n in names)
+    child = f"""from launch.actions import DeclareLaunchArgument
+
+
+def generate_launch_description():
+    return LaunchDescription([
+{declares}    ])
+"""
+    found = _l106(demo_findings, child, "{'arg_29x': 'y'}")
+    assert [m for _, m in found] == [
+        'argument "arg_29x" is passed to "child.launch.py", which never declares or reads it (it declares or reads '
+        + ", ".join(f'"{n}"' for n in names[:12]) + ' and 18 more); the value is silently ignored; '
+        'did you mean "arg_29" or "arg_28" or "arg_27"?']

@@ -218,3 +218,31 @@ def test_a_branch_on_a_value_unknown_at_resolution_stays_undecided(demo_package,
     nodes = json.loads(api.graph(opts, path, "json"))["nodes"]
     assert sorted((n["fqn"], n["active"]) for n in nodes if n["fqn"]) == [("/filter", True), ("/lidar", True)]
     assert [(n["package"], n["active"]) for n in nodes if not n["fqn"]] == [("demo", True)]  # the driver
+
+
+def test_a_lookup_without_default_of_an_unset_configuration_is_no_error(demo_findings):
+    # context.launch_configurations.get("extra") gives None when nothing set it: launch does not
+    # fail there, unlike LaunchConfiguration("extra").perform(context) or [...]["extra"]
+    launch = textwrap.dedent('''\
+        from launch import LaunchDescription
+        from launch.actions import DeclareLaunchArgument, OpaqueFunction
+        from launch.substitutions import LaunchConfiguration
+        from launch_ros.actions import Node
+
+
+        def setup(context):
+            extra = context.launch_configurations.get("extra")
+            must = context.launch_configurations["must"]
+            name = "a" if LaunchConfiguration("mode").perform(context)[:1] == "f" else "b"
+            return [Node(package="demo", executable="x", name=name)]
+
+
+        def generate_launch_description():
+            return LaunchDescription([
+                DeclareLaunchArgument("mode", default_value="fast"),
+                OpaqueFunction(function=setup),
+            ])
+        ''')
+    found = demo_findings({"launch/a.launch.py": launch}, "launch/a.launch.py", "L101")
+    assert [message.split(";")[0] for _, message in found] == [
+        'launch configuration "must" is read but never declared or set']

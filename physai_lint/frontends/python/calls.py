@@ -14,7 +14,7 @@ import yaml
 
 from physai_lint.model.launch import EVERY_CONFIGURATION, ConcatFact
 from physai_lint.model.span import Span
-from physai_lint.model.values import FindPackage, LaunchConfig, StrMethod, Text, Value
+from physai_lint.model.values import FindPackage, LaunchConfig, StrMethod, Text, Unknown, Value
 
 from . import api, bounds, builtin_calls, classes, symbolic
 from .convert_values import to_value
@@ -446,7 +446,10 @@ def call_method(ev: Evaluator, obj: Any, name: str, args: list[Any], kwargs: dic
         return Opaque(f"context.{name}", span)
     if isinstance(obj, LaunchConfigsSym):
         if name == "get" and args and isinstance(args[0], str):
-            default = to_value(args[1], span) if len(args) > 1 and args[1] is not None else None
+            # ``.get(name)`` gives None when nothing set the name (no failure, unlike ``[name]``):
+            # a default of unknown value, so that a read of an unset name is no error (L101).
+            default = to_value(args[1], span) if len(args) > 1 and args[1] is not None else \
+                (Unknown("None: the launch configuration is not set", span),)
             return _peeked(ev, (LaunchConfig((Text(str(args[0]), span),), default, span),))
         ev.escaped.add(EVERY_CONFIGURATION)  # items(), values(), copy(), get(name unknown): any
         return Opaque(f"launch_configurations.{name}", span)

@@ -7,7 +7,7 @@ from typing import Any
 
 from physai_lint.checks.base import CheckContext
 from physai_lint.closematch import close_matches
-from physai_lint.model.fields import ATOMS, POSITION_FIELDS, field_names
+from physai_lint.model.fields import objects
 from physai_lint.model.launch import PythonFacts
 from physai_lint.resolve.model import LaunchResult, NodeInstance
 
@@ -89,27 +89,7 @@ def ir_objects(ctx: CheckContext, path: str) -> list[Any]:
     depth-first order, at most 60 levels deep. Listed once per file and run for the rules that look
     for one kind of value anywhere (``Command``, substitutions a distro lacks)."""
     lf = ctx.launch_files[path]
-    return run_memo(ctx.options.setdefault("_ir_objects", {}), path, lf, lambda: _objects(lf.actions))  # type: ignore[no-any-return]
-
-
-def _objects(root: Any) -> list[Any]:
-    out: list[Any] = []
-    stack: list[tuple[Any, int]] = [(root, 0)]
-    pop, push = stack.pop, stack.append
-    while stack:
-        obj, depth = pop()
-        if depth > 60 or type(obj) in ATOMS:
-            continue
-        if isinstance(obj, (tuple, list)):
-            for item in reversed(obj):
-                push((item, depth + 1))
-            continue
-        out.append(obj)
-        names = field_names(type(obj))
-        for name in reversed(names):
-            if name not in POSITION_FIELDS:
-                push((getattr(obj, name), depth + 1))
-    return out
+    return run_memo(ctx.options.setdefault("_ir_objects", {}), path, lf, lambda: objects(lf.actions))  # type: ignore[no-any-return]
 
 
 def where(node: NodeInstance) -> str:

@@ -10,11 +10,12 @@ from __future__ import annotations
 
 import posixpath
 from collections.abc import Callable
-from dataclasses import dataclass, field, fields, is_dataclass, replace
+from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Any
 
 from physai_lint.model import launch as ir
 from physai_lint.model import values as vals
+from physai_lint.model.fields import objects
 from physai_lint.model.span import Span
 from physai_lint.resolve import names
 from physai_lint.resolve.evaluate import Evaluator, Scope
@@ -496,34 +497,10 @@ class Instantiator:
             self.result.inactive_opaque.append(part)
 
 
-def _config_reads(root: Any) -> list[tuple[str, vals.LaunchConfig]]:
-    """The launch configurations of literal name that the actions (or values) ``root`` read,
-    with their substitutions, in the order of a depth-first walk through the IR's dataclasses."""
-    out: list[tuple[str, vals.LaunchConfig]] = []
-    stack = [root]
-    while stack:
-        obj = stack.pop()
-        if isinstance(obj, vals.LaunchConfig):
-            if len(obj.name) == 1 and isinstance(obj.name[0], vals.Text):
-                out.append((obj.name[0].text, obj))
-            stack.extend((obj.name, obj.default))
-        elif isinstance(obj, (tuple, list)):
-            stack.extend(reversed(obj))
-        elif isinstance(obj, dict):
-            stack.extend(reversed([*obj.keys(), *obj.values()]))
-        elif is_dataclass(obj) and not isinstance(obj, (Span, type)):
-            stack.extend(getattr(obj, f) for f in reversed(_field_names(type(obj))))
-    return out
-
-
-_FIELD_NAMES: dict[type, tuple[str, ...]] = {}
-
-
-def _field_names(cls: type) -> tuple[str, ...]:
-    names_ = _FIELD_NAMES.get(cls)
-    if names_ is None:
-        names_ = _FIELD_NAMES[cls] = tuple(f.name for f in fields(cls))
-    return names_
+def _config_reads(actions: tuple[ir.Action, ...]) -> list[tuple[str, vals.LaunchConfig]]:
+    """The launch configurations of literal name that ``actions`` read, with their substitutions."""
+    return [(o.name[0].text, o) for o in objects(actions)
+            if isinstance(o, vals.LaunchConfig) and len(o.name) == 1 and isinstance(o.name[0], vals.Text)]
 
 
 def resolve_launch(entry: str, cli_args: dict[str, str], loader: Loader,

@@ -227,15 +227,14 @@ class ActionBuilder:
         if n == "OpaqueFunction":
             result = o.extra.get("result")
             performed = tuple(v for v in o.extra.get("performed", ()) if v)
+            # What it substituted or looked up: the resolver reads these and evaluates the function
+            # again with their values (``frontends.python.specialize``) when the evaluation lost
+            # track, or lost values on the way (an ``if`` over a performed string).
+            read = _distinct(performed + tuple(v for v in o.extra.get("peeked", ()) if v))
             if isinstance(result, Opaque):
-                # What it substituted before the evaluation lost track: the resolver reads these,
-                # and evaluates the function again with their values (``frontends.python.specialize``).
-                peeked = tuple(v for v in o.extra.get("peeked", ()) if v)
-                return L.OpaqueAction(i, s, cond, result.reason, (), _distinct(performed + peeked))
-            # Values lost on the way (an ``if`` over a performed string): evaluated again likewise.
-            again = _distinct(performed + tuple(v for v in o.extra.get("peeked", ()) if v)) \
-                if o.extra.get("undecided") else ()
-            return L.OpaqueAction(i, s, cond, "", self.actions(result, s), performed, again)
+                return L.OpaqueAction(i, s, cond, result.reason, (), read)
+            return L.OpaqueAction(i, s, cond, "", self.actions(result, s), performed,
+                                  read if o.extra.get("undecided") else ())
         if n == "ResetLaunchConfigurations":
             lcs = o.arg(0, "launch_configurations")
             keep = tuple((to_value(k, s), to_value(v, s)) for k, v in lcs.items()) if isinstance(lcs, dict) else None

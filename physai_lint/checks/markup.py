@@ -20,7 +20,7 @@ def unknown_attribute(ctx: CheckContext) -> Iterator[Diagnostic]:
         lf = ctx.launch_files[path]
         if lf.format not in ("xml", "yaml") or lf.markup is None:
             continue
-        for span, message, hint in unknown_markup(lf.markup, lf.format, lambda: _extension_tags(ctx)):
+        for span, message, hint in unknown_markup(lf.markup, lf.format, lambda: _extension_tags(ctx), ctx.distro):
             if hint and " " not in hint:
                 help_ = f'did you mean "{hint}"?'
             else:

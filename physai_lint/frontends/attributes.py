@@ -192,6 +192,9 @@ def _yaml_types(el: Element, accepted: frozenset[str]) -> Iterator[Diagnostic]:
             continue
         kind = _yaml_kind(attr)
         shown = _shown(attr, kind)
+        if name == "on_exit" and kind is str:
+            yield from _on_exit(attr, tag, "yaml")
+            continue
         if name in _FLOAT.get(tag, ()):
             if kind is float or (kind is str and name == "period"):
                 continue
@@ -341,11 +344,26 @@ def _xml_number(text: str, want: type) -> bool:
     return True
 
 
+def _on_exit(attr: Attr, tag: str, fmt: str) -> Iterator[Diagnostic]:
+    """``on_exit`` of a process: ``ExecuteProcess.parse`` compares the raw text with "shutdown"
+    (no substitution) and raises for anything else."""
+    if attr.text != "shutdown":
+        example = "on_exit: shutdown" if fmt == "yaml" else 'on_exit="shutdown"'
+        yield _attr_diag(
+            attr, f'"on_exit" of "{tag}" is "{attr.text}"; launch accepts only "shutdown" there and '
+            f"fails with ValueError \"Attribute on_exit of Entity node expected to be shutdown but "
+            f"got `{attr.text}`\"",
+            f"write {example}, or start what should follow the process from a Python launch "
+            "file (OnProcessExit)", f"{tag}:on_exit")
+
+
 def _xml_types(el: Element) -> Iterator[Diagnostic]:
     tag = el.tag
     for name, attr in el.attrs.items():
         text = attr.text
-        if name in _FLOAT.get(tag, ()) and name != "period":
+        if name == "on_exit":
+            yield from _on_exit(attr, tag, "xml")
+        elif name in _FLOAT.get(tag, ()) and name != "period":
             if not _xml_number(text, float):
                 what = "a substitution" if "$(" in text else "not a number"
                 yield _attr_diag(

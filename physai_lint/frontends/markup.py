@@ -18,6 +18,7 @@ from physai_lint.model.launch import (
     ComposableNode,
     Condition,
     DeclareArgument,
+    EventHandler,
     ExecuteProcess,
     Group,
     Include,
@@ -171,6 +172,8 @@ class _Builder:
             maker = _ACTIONS.get(el.tag)
             if maker is not None:
                 out.append(maker(self, el))
+                if el.tag in _PROCESS_TAGS:
+                    out.extend(self.on_exit(el, out[-1]))
             elif el.tag not in _NON_ACTIONS:
                 out.append(OpaqueAction(self.ident(el), el.span, self.condition(el),
                                         f'unknown tag "{el.tag}"'))
@@ -241,6 +244,17 @@ class _Builder:
         return ExecuteProcess(self.ident(el), el.span, self.condition(el),
                               split_cmdline(cmd) if cmd is not None else None, self.val(el, "name"),
                               self.other(el))
+
+    def on_exit(self, el: Element, action: Action) -> list[Action]:
+        """``on_exit="shutdown"``: ``ExecuteProcess.parse`` gives the process ``on_exit=[Shutdown()]``,
+        which launch registers as an ``OnProcessExit`` handler when the process starts (jazzy+;
+        humble rejects the attribute, L002; any other text fails, L010)."""
+        attr = el.attrs.get("on_exit")
+        if attr is None or attr.text != "shutdown":
+            return []
+        return [EventHandler(f"{action.id}/on_exit", attr.value_span, action.condition,
+                             "on_process_exit", action.id, True,
+                             (Shutdown(f"{action.id}/on_exit/shutdown", attr.value_span, None),))]
 
     def other(self, el: Element) -> tuple[Value, ...]:
         """The process attributes launch substitutes that no rule models, and ``<env>`` values."""
@@ -381,6 +395,7 @@ _NODE_FIELDS = (("pkg", "package"), ("exec", "executable"), ("name", "name"),
                 ("ros_args", "ros_arguments"))
 _ENV_OPS: dict[str, Literal["set", "unset", "append", "reset"]] = {
     "set_env": "set", "unset_env": "unset", "append_env": "append", "reset_env": "reset"}
+_PROCESS_TAGS = frozenset({"executable", "node", "node_container"})
 _NON_ACTIONS = frozenset({"param", "remap", "env", "choice", "keep", "extra_arg",
                           "composable_node", "set_ros_log_dir"})
 _ACTIONS: dict[str, Callable[[_Builder, Element], Action]] = {

@@ -26,7 +26,6 @@ _COND = frozenset({"if", "unless"})
 _PROCESS = frozenset({
     "cwd", "name", "launch-prefix", "output", "shell", "emulate_tty", "sigterm_timeout",
     "sigkill_timeout", "respawn", "respawn_delay", "respawn_max_retries", "on_exit",
-    "additional_env", "log_cmd", "cached_output", "output_format",
 })
 _NODE_ATTRS = (_PROCESS - {"name"}) | {"pkg", "exec", "name", "namespace", "exec_name", "args",
                                        "ros_args", "node-name"}
@@ -113,17 +112,33 @@ _HINTS: dict[tuple[str, str], str] = {
 }
 
 
+# Process attributes (executable, node, node_container) that ``ExecuteProcess.parse`` reads only
+# from a later distro on: launch iron added sigterm_timeout/sigkill_timeout (#667), emulate_tty
+# (#669) and on_exit (#751, backported as #764), jazzy respawn_max_retries; humble's parse reads
+# none of them, so its ``assert_entity_completely_parsed`` rejects them.
+NEWER_PROCESS_ATTRIBUTES: dict[str, str] = {
+    "sigterm_timeout": "jazzy", "sigkill_timeout": "jazzy", "emulate_tty": "jazzy",
+    "on_exit": "jazzy", "respawn_max_retries": "jazzy",
+}
+_PROCESS_TAGS = frozenset({"executable", "node", "node_container"})
+
+
 def suggest(word: str, options: frozenset[str]) -> str | None:
     close = difflib.get_close_matches(word, sorted(options), n=1, cutoff=0.6)
     return close[0] if close else None
 
 
-def unknown_markup(facts: MarkupFacts, fmt: str = "xml", extension_tags: Callable[[], frozenset[str]] | None = None
-                   ) -> list[tuple[Span, str, str | None]]:
+def unknown_markup(facts: MarkupFacts, fmt: str = "xml", extension_tags: Callable[[], frozenset[str]] | None = None,
+                   distro: str = "rolling") -> list[tuple[Span, str, str | None]]:
     """Unknown tags, attributes/keys and misplaced tags: (span, message, suggestion or help).
     In YAML a key of its parent's given a mapping (``value: {a: 1}``) is wrong-attribute-type's.
     ``extension_tags``: the tags launch extensions of the workspace register (asked for only when
-    a tag is unknown); such a tag and what it holds are theirs to judge."""
+    a tag is unknown); such a tag and what it holds are theirs to judge. ``distro``: process
+    attributes newer than it (``NEWER_PROCESS_ATTRIBUTES``) are unknown."""
+    from physai_lint.workspace.distro import DISTROS
+
+    rank = DISTROS.index(distro) if distro in DISTROS else len(DISTROS)
+    newer = {name: since for name, since in NEWER_PROCESS_ATTRIBUTES.items() if rank < DISTROS.index(since)}
     out: list[tuple[Span, str, str | None]] = []
     extensions: set[str] = set()  # extension tags met: what they hold is theirs to judge
     for tag, parent, attrs, span in facts.elements:
@@ -146,6 +161,11 @@ def unknown_markup(facts: MarkupFacts, fmt: str = "xml", extension_tags: Callabl
         elif parent is None and tag != "launch":
             out.append((span, f'unexpected root tag "{tag}"', "launch"))
         for name, name_span in attrs:
+            if name in newer and tag in _PROCESS_TAGS:
+                out.append((name_span, f'attribute "{name}" on "{tag}" does not exist in {distro} '
+                            f"(launch reads it from {newer[name]} on)",
+                            f'remove "{name}", or target a newer distro with --distro'))
+                continue
             if name in spec.attributes and (tag, name) not in _HINTS:
                 continue
             if name.endswith("-sep") and name[:-4] in spec.attributes:

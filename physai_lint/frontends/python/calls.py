@@ -565,4 +565,7 @@ _HANDLER_KEYS = {
     "OnProcessStart": ("on_start",), "OnProcessExit": ("on_exit",), "OnExecutionComplete": ("on_completion",),
     "OnShutdown": ("on_shutdown",), "OnStateTransition": ("entities",), "OnProcessIO": ("on_stdout", "on_stderr"),
     "OnIncludeLaunchDescription": ("entities",),
+    # a process action's on_exit= function gets the same (event, context) (launch ExecuteLocal)
+    "ExecuteProcess": ("on_exit",), "Node": ("on_exit",), "LifecycleNode": ("on_exit",),
+    "ComposableNodeContainer": ("on_exit",),
 }

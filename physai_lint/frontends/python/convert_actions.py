@@ -124,7 +124,7 @@ class ActionBuilder:
         if isinstance(v, LObj) and v.qual == "launch.LaunchDescription":
             return list(self.actions(v.extra.get("entities", []), v.span))
         if isinstance(v, LObj) and v.qual in api.ACTION_KINDS:
-            return [self.wrapped(v)]
+            return self.wrapped(v)
         return [self._opaque(f"not a launch action ({type_name(v)})", span)]
 
     def _under(self, tag: CondTag, value: Any, span: Span) -> list[L.Action]:
@@ -148,21 +148,39 @@ class ActionBuilder:
         """The branches ``obj`` was made under that no enclosing action carries already."""
         return [t for t in obj.tags if t not in self.applied]
 
-    def wrapped(self, obj: LObj) -> L.Action:
+    def wrapped(self, obj: LObj) -> list[L.Action]:
+        """``obj``'s action, followed by the handler of its ``on_exit`` (``_on_exit``), in a Group
+        for each branch it was made under that no enclosing action carries."""
         new_tags = self._new_tags(obj)
         for t in new_tags:
             if t.condition is None:
-                return L.OpaqueAction(self.id_of(obj), obj.span, None, t.reason)
+                return [L.OpaqueAction(self.id_of(obj), obj.span, None, t.reason)]
         self.applied.extend(new_tags)
         try:
             action = self.action(obj)
+            out = [action, *self._on_exit(obj, action)]
         finally:
             del self.applied[len(self.applied) - len(new_tags):]
         for depth, t in enumerate(reversed(new_tags)):
             assert t.condition is not None
-            action = L.Group(f"{self.id_of(obj)}/{t.condition.raw}{depth}", t.condition.span, t.condition,
-                             (action,), scoped=False)
-        return action
+            out = [L.Group(f"{self.id_of(obj)}/{t.condition.raw}{depth}", t.condition.span, t.condition,
+                           tuple(out), scoped=False)]
+        return out
+
+    def _on_exit(self, obj: LObj, action: L.Action) -> list[L.Action]:
+        """A process action's ``on_exit=`` actions (or the actions its function returns) as the
+        ``OnProcessExit(target_action=self, on_exit=...)`` handler launch registers when the action
+        runs (``ExecuteLocal.execute``): under the action's own condition, so nothing of it exists
+        when the process never starts."""
+        if api.short(obj.qual) not in _PROCESS_ACTIONS or isinstance(action, L.OpaqueAction):
+            return []
+        entities = obj.extra.get("entities_result", obj.kwargs.get("on_exit"))
+        if entities is None or isinstance(entities, (str, bool, int, float)) or \
+                (isinstance(entities, LObj) and api.is_substitution(entities.qual)):
+            return []  # none, or of a type launch refuses (reported by _check_text)
+        span = obj.arg_span(-1, "on_exit")
+        return [L.EventHandler(f"{action.id}/on_exit", span, action.condition, "on_process_exit",
+                               action.id, True, self.actions(entities, span))]
 
     # ---- one action -----------------------------------------------------------------------
     def action(self, o: LObj) -> L.Action:

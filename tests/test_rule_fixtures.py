@@ -2,7 +2,7 @@
 
 ``bad/expected.json`` lists findings ``{code, file, line}`` that must be reported (other findings
 are allowed); ``good/`` must not report the folder's code. Neither may report X003 (a crash).
-Optional per case: ``args.txt`` (``NAME:=VALUE`` per line), ``interfaces.yaml``, ``entry.txt``
+Optional per case: ``args.txt`` (``NAME:=VALUE`` per line), ``distro.txt`` (default humble), ``interfaces.yaml``, ``entry.txt``
 (the launch file, relative to the case dir; default: the first launch file under ``src/``).
 A folder with ``xfail.txt`` documents a known rule bug: the test is a strict xfail with its reason.
 """
@@ -50,8 +50,10 @@ def read_args(case: Path) -> dict[str, str]:
 def lint(case: Path) -> list[tuple[str, str, int, str]]:
     """(code, file relative to the case, line, message) of every finding."""
     interfaces = ["interfaces.yaml"] if (case / "interfaces.yaml").is_file() else []
+    distro = (case / "distro.txt").read_text(encoding="utf-8").strip() if (case / "distro.txt").is_file() \
+        else "humble"
     opts = CheckOptions(paths=[entry_of(case)], launch_args=read_args(case), workspace=".",
-                        distro="humble", interfaces=interfaces, cache=False)
+                        distro=distro, interfaces=interfaces, cache=False)
     report = run_check(opts, cwd=str(case))
     out = []
     for f in report.findings:

@@ -387,6 +387,11 @@ class PythonFacts:
     # A call of a function the file defines with arguments its signature refuses (how "call";
     # detail: Python's TypeError message).
     call_errors: tuple[ConcatFact, ...] = ()
+    # Package lookups (``FindPackage`` values, ``eager``) that building the description surely
+    # makes (``get_package_share_directory('p')``, ``FindPackageShare('p').find('p')``): launch
+    # fails there when the package does not exist, whether or not the path is used. Not those in a
+    # ``try`` with handlers, in an undecided branch, or in a function launch calls later.
+    lookups: tuple[Value, ...] = ()
 
 
 @dataclass(frozen=True, slots=True)

@@ -98,6 +98,7 @@ def include(inst: Instantiator, a: ir.Include, scope: Scope) -> None:
     inst.frame = replace(fr, file=source, chain=fr.chain + (source,), passed=frozenset(passed),
                          dir=posixpath.dirname(path))
     try:
+        inst.lookups(lf, scope)
         inst._walk(lf.actions, scope)
     finally:
         inst.frame = fr

@@ -164,6 +164,7 @@ class Instantiator:
             scope.configs.setdefault(d.name, None)
         scope.locals = {"current_launch_file_directory": posixpath.dirname(entry),
                         "current_launch_file_path": entry, "_owner": entry}
+        self.lookups(lf, scope)
         self._walk(lf.actions, scope)
         self._run_deferred(scope)
         for arg in self.result.declared_args:
@@ -171,6 +172,12 @@ class Instantiator:
                 self.result.arguments[arg.name] = arg.value
         self.nodes.finish()
         return self.result
+
+    def lookups(self, lf: ir.LaunchFile, scope: Scope) -> None:
+        """The package lookups building a Python file's description surely makes
+        (``PythonFacts.lookups``): each package is looked up when the file is loaded."""
+        for value in lf.python.lookups if lf.python is not None else ():
+            self.ev.eval(value, scope)
 
     # ---- walking -----------------------------------------------------------------------------
     def _walk(self, actions: tuple[ir.Action, ...], scope: Scope) -> None:

@@ -317,7 +317,9 @@ def call_ref(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any], 
     if qual in ("ament_index_python.packages.get_package_share_directory", "ament_index_python.packages.get_package_prefix"):
         pkg = args[0] if args else kwargs.get("package_name")
         kind = "share" if qual.endswith("share_directory") else "prefix"
-        return SymStr((FindPackage(to_value(pkg, span), kind, span, eager=True),))  # type: ignore[arg-type]
+        found = FindPackage(to_value(pkg, span), kind, span, eager=True)  # type: ignore[arg-type]
+        ev.lookup(found)
+        return SymStr((found,))
     if qual == "launch.utilities.perform_substitutions" and len(args) >= 2:
         return _performed(ev, args[1], span)
     if qual in _MULTI_ROBOT_POSE:
@@ -435,7 +437,9 @@ def call_method(ev: Evaluator, obj: Any, name: str, args: list[Any], kwargs: dic
         if name == "find" and obj.qual in _FIND_PACKAGE and (args or "package_name" in kwargs):
             # FindPackageShare(...).find(pkg): ament_index's directory of pkg, found right away
             pkg = args[0] if args else kwargs["package_name"]
-            return SymStr((FindPackage(to_value(pkg, span), _FIND_PACKAGE[obj.qual], span, eager=True),))  # type: ignore[arg-type]
+            found = FindPackage(to_value(pkg, span), _FIND_PACKAGE[obj.qual], span, eager=True)  # type: ignore[arg-type]
+            ev.lookup(found)
+            return SymStr((found,))
         # an unknown method (IfCondition(...).evaluate(context), a helper object's own method)
         # may use what the object holds as well as its arguments
         ev.escape([obj, *args, *kwargs.values()])
@@ -543,7 +547,11 @@ def make_lobj(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any],
         fkwargs = obj.arg(2, "kwargs") or {}
         if isinstance(fn, UserFunc) and isinstance(fargs, (list, tuple)) and isinstance(fkwargs, dict):
             start, peeks, undecided = len(ev.performed), len(ev.peeked), ev.undecided
-            obj.extra["result"] = call_user(ev, fn, [ContextSym(), *fargs], dict(fkwargs), span)
+            ev.guarded += 1  # the body runs when launch executes the action, if it does
+            try:
+                obj.extra["result"] = call_user(ev, fn, [ContextSym(), *fargs], dict(fkwargs), span)
+            finally:
+                ev.guarded -= 1
             obj.extra["performed"] = tuple(ev.performed[start:])
             obj.extra["peeked"] = tuple(ev.peeked[peeks:])
             obj.extra["undecided"] = ev.undecided > undecided
@@ -555,7 +563,11 @@ def make_lobj(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any],
             if isinstance(fn, UserFunc):
                 nargs = len(fn.node.args.posonlyargs) + len(fn.node.args.args)
                 fake = [Opaque("the event is known only at launch time", span), ContextSym()][:nargs]
-                obj.extra["entities_result"] = call_user(ev, fn, fake, {}, span)
+                ev.guarded += 1
+                try:
+                    obj.extra["entities_result"] = call_user(ev, fn, fake, {}, span)
+                finally:
+                    ev.guarded -= 1
                 break
     ev.objects.append(obj)
     return obj

@@ -312,8 +312,13 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
 
     def st_Try(self, s: ast.Try, scope: Scope) -> None:
         outcomes = self.try_outcomes.setdefault(s, set())
+        guarded = bool(s.handlers)  # an error raised in the body may be caught
+        self.guarded += guarded
         try:
-            self.exec_block(s.body, scope)
+            try:
+                self.exec_block(s.body, scope)
+            finally:
+                self.guarded -= guarded
         except Raise:
             outcomes.add(False)
             if s.handlers:

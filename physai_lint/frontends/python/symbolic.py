@@ -8,7 +8,7 @@ from typing import Any
 
 from physai_lint.model.launch import EVERY_CONFIGURATION, ConcatFact, TypeFact
 from physai_lint.model.span import Span
-from physai_lint.model.values import BoolOp, Compare, IfElse, PathJoin, Value
+from physai_lint.model.values import BoolOp, Compare, FindPackage, IfElse, PathJoin, Value
 
 from . import api, bounds
 from .convert_values import to_value
@@ -44,6 +44,16 @@ class Recorder:
         self.tests: dict[tuple[str, Span], ConcatFact] = {}
         # Calls of the file's own functions with arguments their signature refuses (TypeError).
         self.call_errors: dict[Span, ConcatFact] = {}
+        # Package lookups made while the description is built (``get_package_share_directory``):
+        # ``lookup`` keeps those that surely run (``PythonFacts.lookups``). ``guarded``: inside a
+        # ``try`` body (the error may be caught), a function launch calls later (an OpaqueFunction,
+        # an event handler's), or a branch the evaluator could not decide.
+        self.lookups: list[Value] = []
+        self.guarded = 0
+
+    def lookup(self, found: FindPackage) -> None:
+        if not self.guarded and not getattr(self, "cond_stack", None):
+            self.lookups.append((found,))
 
     def escape(self, values: Any, depth: int = 0) -> None:
         """Note the launch configurations (by literal name) in ``values``: arguments of a call the

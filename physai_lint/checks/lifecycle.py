@@ -33,6 +33,8 @@ def managers(ctx: CheckContext, launch: LaunchResult) -> Iterator[tuple[NodeInst
 
 
 def _item_span(node: NodeInstance, ep: Any, index: int) -> Any:
+    if ep.item_spans and index < len(ep.item_spans):  # from a parameter file
+        return ep.item_spans[index]
     for src in node.param_sources:
         if isinstance(src, ResolvedParamDict):
             for prm in src.params:
@@ -46,7 +48,7 @@ def not_launched(ctx: CheckContext) -> Iterator[Diagnostic]:
     seen: set[object] = set()
     for launch in ctx.launches:
         nodes = [n for n in launch.nodes if n.active is not False and n.kind != "process"]
-        if any(n.fqn is None for n in nodes) or launch.opaque:
+        if any(n.fqn is None and _may_be_lifecycle(ctx, n) for n in nodes) or launch.opaque:
             continue  # an unknown node might be the one it manages
         fqns = {n.fqn for n in nodes}
         mgrs = list(managers(ctx, launch))
@@ -95,6 +97,37 @@ def unmanaged(ctx: CheckContext) -> Iterator[Diagnostic]:
                     f"lifecycle node {where(node)} is launched but no lifecycle manager names it; it "
                     "stays unconfigured",
                     help=f'add "{node.name}" to a lifecycle manager\'s node_names', key=node.fqn)
+
+
+# Executables of released packages that make plain nodes (never a lifecycle node a manager could
+# bring up), which launch files commonly start without a name: rviz, the ros2_control spawners,
+# teleoperation, the simulators' bridges and spawners.
+NEVER_LIFECYCLE = frozenset({
+    ("rviz2", "rviz2"), ("controller_manager", "spawner"), ("controller_manager", "unspawner"),
+    ("controller_manager", "spawner.py"), ("controller_manager", "hardware_spawner"),
+    ("robot_state_publisher", "robot_state_publisher"),
+    ("joint_state_publisher", "joint_state_publisher"),
+    ("joint_state_publisher_gui", "joint_state_publisher_gui"),
+    ("tf2_ros", "static_transform_publisher"), ("teleop_twist_keyboard", "teleop_twist_keyboard"),
+    ("teleop_twist_joy", "teleop_node"), ("joy", "joy_node"), ("joy", "game_controller_node"),
+    ("gazebo_ros", "spawn_entity.py"), ("ros_gz_sim", "create"), ("ros_gz_bridge", "parameter_bridge"),
+    ("ros_gz_image", "image_bridge"), ("ros_ign_gazebo", "create"), ("ros_ign_bridge", "parameter_bridge"),
+    ("twist_mux", "twist_mux"), ("rqt_gui", "rqt_gui"), ("rqt_robot_steering", "rqt_robot_steering"),
+    ("topic_tools", "relay"), ("image_transport", "republish"),
+})
+
+
+def _may_be_lifecycle(ctx: CheckContext, node: NodeInstance) -> bool:
+    """Whether ``node`` (its name unknown) may be a lifecycle node a manager waits for: not an
+    executable known to make a plain node (``NEVER_LIFECYCLE``, or a bundled interface that says
+    so). What the linter extracted from sources is not trusted for this: a lifecycle base class it
+    did not follow would hide the node a manager names."""
+    if node.kind == "lifecycle_node":
+        return True
+    if (node.package, node.executable) in NEVER_LIFECYCLE:
+        return False
+    iface = ctx.interfaces.get(node.package, node.executable) if ctx.interfaces is not None else None
+    return iface is None or not iface.source.startswith("bundled ") or bool(iface.lifecycle)
 
 
 def _is_lifecycle(ctx: CheckContext, node: NodeInstance) -> bool:

@@ -53,6 +53,7 @@ class EffectiveParam:
     chain: list[Blame] = field(default_factory=list)
     certain: bool = True
     node_key: str | None = None
+    item_spans: tuple[Span, ...] | None = None  # an array from a file: where each item is written
 
 
 def _file_for(src: ResolvedParamFile, files: Mapping[str, ParamFileModel]) -> ParamFileModel | None:
@@ -202,6 +203,7 @@ def effective_parameters(node_fqn: str | None, sources: list[ParamSourceR],
             ep.kind = w.slot
             ep.value = w.value
             ep.origin = w.span
+            ep.item_spans = w.param.item_spans if w.param is not None else None
         if uncertain or name in uncertain_names:
             ep.certain = False
     return out

@@ -109,6 +109,7 @@ class _Parser:
         self.last_node_key_span: Span | None = None
         # current sequence
         self.seq_items: list[Any] = []
+        self.seq_spans: list[Span] = []
         self.seq_launch: list[Any] = []
         self.seq_start: Any = None
         self.seq_key_span: Span | None = None
@@ -206,6 +207,7 @@ class _Parser:
                          "the structure into separate parameters")
             self.seq_items.append(typed)
             self.seq_launch.append(launch_value)
+            self.seq_spans.append(span)
 
     def parse_key(self, ev: Any, span: Span) -> None:
         value = ev.value
@@ -271,6 +273,7 @@ class _Parser:
         self.seq_type = None
         self.seq_items = []
         self.seq_launch = []
+        self.seq_spans = []
         self.seq_start = ev
         self.seq_key_span = self.last_key_span
 
@@ -283,7 +286,8 @@ class _Parser:
             if self.seq_items:
                 kind = f"{self.seq_type}_array"
                 fp = FileParam(name, list(self.seq_items), kind, self.raw(start, ev), span,
-                               self.seq_key_span or span, False, list(self.seq_launch))
+                               self.seq_key_span or span, False, list(self.seq_launch),
+                               tuple(self.seq_spans) if len(self.seq_spans) == len(self.seq_items) else None)
                 self.op("set", kind, list(self.seq_items), fp)
             else:
                 fp = FileParam(name, [], "not_set", self.raw(start, ev), span,

@@ -43,6 +43,7 @@ class FileParam:
     key_span: Span
     quoted: bool = False
     launch_value: Any = None
+    item_spans: tuple[Span, ...] | None = None  # an array: where each item is written
 
 
 @fast_init

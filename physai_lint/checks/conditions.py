@@ -1,9 +1,11 @@
 """Conditions that can never hold: L108 condition-never-true.
 
-Conservative by design: a condition is reported only when every input is known (literals, and
-launch arguments whose ``choices`` bound their values, never changed by ``SetLaunchConfiguration``
-/ ``<let>`` / group-local configurations anywhere in the checked files). ``PythonExpression`` /
-``$(eval)`` are evaluated by ``resolve/safe_eval.py`` for every combination of those choices.
+Conservative by design: a condition is reported only when every input is known: literals, values
+a ``SetLaunchConfiguration`` / ``<let>`` without a condition surely set before it (walked in
+execution order, ``_Known``), and launch arguments whose ``choices`` bound their values, never
+changed by ``SetLaunchConfiguration`` / ``<let>`` / group-local configurations anywhere in the
+checked files. ``PythonExpression`` / ``$(eval)`` are evaluated by ``resolve/safe_eval.py`` for
+every combination of those values.
 """
 from __future__ import annotations
 
@@ -79,8 +81,8 @@ def _choices(lf: ir.LaunchFile) -> dict[str, tuple[str, ...]]:
     return {k: v for k, v in out.items() if v}
 
 
-def _compare_dead(cond: ir.Condition, choices: dict[str, tuple[str, ...]],
-                  set_names: set[str]) -> str | None:
+def _compare_dead(cond: ir.Condition, domains: dict[str, tuple[str, ...]],
+                  fixed: dict[str, tuple[str, Any]]) -> str | None:
     if len(cond.value) != 1 or not isinstance(cond.value[0], Compare):
         return None
     cmp = cond.value[0]
@@ -88,14 +90,18 @@ def _compare_dead(cond: ir.Condition, choices: dict[str, tuple[str, ...]],
     right = literal_of(cmp.right)
     if name is None or right is None:
         name, right = _config_name(cmp.right), literal_of(cmp.left)
-    if name is None or right is None or name in set_names or name not in choices:
+    if name is None or right is None or name not in domains:
         return None
-    options = choices[name]
+    options = domains[name]
     equal_possible = right in options
     never_true = (cond.kind == "if" and cmp.op == "equals" and not equal_possible) or \
                  (cond.kind == "unless" and cmp.op == "not-equals" and not equal_possible)
     if not never_true:
         return None
+    if name in fixed:
+        value, span = fixed[name]
+        return (f'launch configuration "{name}" is "{value}" here (set at line {span.line}), and it is '
+                f'compared with "{right}", so the condition is never true')
     listed = ", ".join(f'"{c}"' for c in options)
     return (f'launch argument "{name}" is compared with "{right}", which is not one of its choices '
             f"({listed}), so the condition is never true")
@@ -119,22 +125,24 @@ def _parts(value: Any) -> Iterator[Any]:
                 yield from _parts(sub)
 
 
-def _computed_dead(cond: ir.Condition, choices: dict[str, tuple[str, ...]],
-                   set_names: set[str]) -> str | None:
-    """A PythonExpression / $(eval) / boolean / comparison condition that is false for every
-    combination of the declared choices of the launch arguments it reads (safe evaluator only)."""
+def _computed_dead(cond: ir.Condition, domains: dict[str, tuple[str, ...]],
+                   fixed: dict[str, tuple[str, Any]]) -> str | None:
+    """A PythonExpression / $(eval) / boolean / comparison condition, or a launch configuration a
+    ``<let>`` set (``fixed``), that is false for every combination of the values its inputs can
+    take (``domains``: set values, declared choices; safe evaluator only)."""
     parts = list(_parts(cond.value))
-    if not any(isinstance(p, _COMPUTED) for p in parts):
-        return None
+    computed = any(isinstance(p, _COMPUTED) for p in parts)
     names: list[str] = []
     for p in parts:
         if isinstance(p, LaunchConfig):
             name = literal_of(p.name)
-            if name is None or name in set_names or name not in choices:
+            if name is None or name not in domains:
                 return None
             if name not in names:
                 names.append(name)
-    combos = list(itertools.islice(itertools.product(*(choices[n] for n in names)), _MAX_COMBINATIONS + 1))
+    if not computed and not any(n in fixed for n in names):
+        return None  # a plain $(var x) over choices, or a literal: the other checks' cases
+    combos = list(itertools.islice(itertools.product(*(domains[n] for n in names)), _MAX_COMBINATIONS + 1))
     if len(combos) > _MAX_COMBINATIONS:
         return None
     evaluator = Evaluator(None)
@@ -145,9 +153,15 @@ def _computed_dead(cond: ir.Condition, choices: dict[str, tuple[str, ...]],
     if not names:
         result = evaluator.eval(cond.value, Scope())
         return f'"{expr}" always evaluates to "{result}"'
-    tried = "; ".join(f'"{n}" in ' + ", ".join(f'"{c}"' for c in choices[n]) for n in names)
-    return (f'"{expr}" is {"false" if cond.kind == "if" else "true"} for every declared choice of '
-            f"the launch arguments it reads ({tried})")
+    outcome = "false" if cond.kind == "if" else "true"
+    if all(n in fixed for n in names):
+        given = " and ".join(f'launch configuration "{n}" is "{fixed[n][0]}" here (set at line '
+                             f"{fixed[n][1].line})" for n in names)
+        return f'{given}, so "{expr}" is {outcome}'
+    tried = "; ".join(f'"{n}" is "{fixed[n][0]}" (set at line {fixed[n][1].line})' if n in fixed else
+                      f'"{n}" in ' + ", ".join(f'"{c}"' for c in domains[n]) for n in names)
+    return (f'"{expr}" is {outcome} for every value of the launch configurations it reads '
+            f"({tried})")
 
 
 def _show(part: Any) -> str:
@@ -157,7 +171,7 @@ def _show(part: Any) -> str:
     if isinstance(part, LaunchConfig):
         return f"$(var {literal_of(part.name)})"
     if isinstance(part, PythonExpr):
-        return "$(eval " + "".join(_show(p) for p in part.expression) + ")"
+        return '$(eval "' + "".join(_show(p) for p in part.expression) + '")'
     if isinstance(part, Compare):
         left, right = "".join(_show(p) for p in part.left), "".join(_show(p) for p in part.right)
         return f"$({part.op} {left} {right})"
@@ -193,24 +207,99 @@ def _nested(actions: tuple[Any, ...], outer: dict[str, tuple[str, Any]],
             _nested(a.actions, inner, out, set_names)
 
 
+class _Known:
+    """Launch configurations whose value is surely known at a point of a file walked in execution
+    order: set by a ``SetLaunchConfiguration`` / ``<let>`` without a condition to a literal, in this
+    scope or an enclosing one, with nothing since that may have changed them (an include, whose
+    arguments and configurations leak into the includer; a set whose name or value is unknown; a
+    function the linter could not evaluate). Actions launch runs later (timers, event handlers)
+    see none."""
+
+    def __init__(self, choices: dict[str, tuple[str, ...]], set_names: set[str] | None) -> None:
+        self.choices = {n: c for n, c in choices.items() if set_names is not None and n not in set_names}
+        self.found: list[tuple[ir.Condition, str]] = []
+
+    def walk(self, actions: tuple[Any, ...], fixed: dict[str, tuple[str, Any]]) -> None:
+        for a in actions:
+            for cond in _conditions(a):
+                self.check(cond, fixed)
+            if getattr(a, "condition", None) is not None:
+                if isinstance(a, (ir.SetLaunchConfiguration, ir.Include)) or \
+                        (isinstance(a, ir.Group) and not a.scoped):
+                    self.forget(a, fixed)
+                if isinstance(a, ir.Group):
+                    self.walk(a.actions, dict(fixed) if a.scoped else {})
+                continue
+            if isinstance(a, ir.SetLaunchConfiguration):
+                name, value = literal_of(a.name), literal_of(a.value)
+                if name is None:
+                    fixed.clear()
+                elif value is None:
+                    fixed.pop(name, None)
+                else:
+                    fixed[name] = (value, a.span)
+            elif isinstance(a, ir.Group):
+                inner = dict(fixed) if a.scoped else fixed
+                for k, v in a.launch_configurations:
+                    name, value = literal_of(k), literal_of(v)
+                    if name is None:
+                        inner.clear()
+                    elif value is None:
+                        inner.pop(name, None)
+                    else:
+                        inner[name] = (value, a.span)
+                self.walk(a.actions, inner)
+            elif isinstance(a, (ir.Timer, ir.EventHandler)):
+                self.walk(a.actions, {})  # run later, after whatever the rest sets
+                self.forget(a, fixed)
+            elif isinstance(a, ir.OpaqueAction):
+                if a.reason:
+                    fixed.clear()
+                else:
+                    self.walk(a.actions, fixed)
+            elif isinstance(a, (ir.Include, ir.ResetLaunchConfigurations)):
+                fixed.clear()
+
+    @staticmethod
+    def forget(action: Any, fixed: dict[str, tuple[str, Any]]) -> None:
+        """What ``action`` may set (it may not run, or run later): no longer known."""
+        if isinstance(action, ir.Include):
+            fixed.clear()
+            return
+        for a in [action, *_walk(_children(action))]:
+            if isinstance(a, ir.SetLaunchConfiguration):
+                name = literal_of(a.name)
+                if name is None:
+                    fixed.clear()
+                else:
+                    fixed.pop(name, None)
+            elif isinstance(a, (ir.Include, ir.ResetLaunchConfigurations)) or \
+                    (isinstance(a, ir.OpaqueAction) and a.reason):
+                fixed.clear()
+
+    def check(self, cond: ir.Condition, fixed: dict[str, tuple[str, Any]]) -> None:
+        domains = {**self.choices, **{n: (v,) for n, (v, _) in fixed.items()}}
+        why = (_literal_dead(cond) or _compare_dead(cond, domains, fixed)
+               or _computed_dead(cond, domains, fixed))
+        if why:
+            self.found.append((cond, why))
+
+
+def _conditions(a: Any) -> list[Any]:
+    conds = [getattr(a, "condition", None)]
+    if isinstance(a, ir.NodeAction):
+        conds += [c.condition for c in a.composable_nodes]
+    return [c for c in conds if isinstance(c, ir.Condition)]
+
+
 @rule("L108", "condition-never-true")
 def condition_never_true(ctx: CheckContext) -> Iterator[Diagnostic]:
     set_names = _set_names(ctx)
     for path in sorted(ctx.launch_files):
         lf = ctx.launch_files[path]
-        found: list[tuple[ir.Condition, str]] = []
-        choices = _choices(lf) if set_names is not None else {}
-        for a in _walk(lf.actions):
-            conds = [getattr(a, "condition", None)]
-            if isinstance(a, ir.NodeAction):
-                conds += [c.condition for c in a.composable_nodes]
-            for cond in conds:
-                if not isinstance(cond, ir.Condition):
-                    continue
-                why = (_literal_dead(cond) or _compare_dead(cond, choices, set_names or set())
-                       or (_computed_dead(cond, choices, set_names) if set_names is not None else None))
-                if why:
-                    found.append((cond, why))
+        known = _Known(_choices(lf), set_names)
+        known.walk(lf.actions, {})
+        found = known.found
         if set_names is not None:
             _nested(lf.actions, {}, found, set_names)
         seen: set[object] = set()

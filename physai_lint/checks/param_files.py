@@ -28,11 +28,20 @@ def missing(ctx: CheckContext) -> Iterator[Diagnostic]:
                         else "is a directory" if src.source and os.path.isdir(src.source) else "does not exist")
                 shown = f'parameter file path "{src.path}"' if what != "does not exist" else f'parameter file "{src.path}"'
                 yield Diagnostic(
-                    "P101", src.span,
-                    f'{shown} {what}; launch only warns "Parameter file '
-                    f'path is not a file" and starts {node.fqn or node.executable} without it',
+                    "P101", src.span, f"{shown} {what}; {_consequence(src, node)}",
                     help="fix the path (package, folder or file name) or create the file",
                     key=src.path or "")
+
+
+def _consequence(src: ResolvedParamFile, node: Any) -> str:
+    """What launch does with a parameter file that is not there (launch_ros ``Node``)."""
+    who = node.fqn or node.executable
+    if src.opened_by:
+        return f"{src.opened_by} opens it while launch runs and the launch fails with FileNotFoundError"
+    if src.origin == "global" and node.kind != "composable_node":
+        return (f"SetParametersFromFile hands it to every node after it, and launch fails when it "
+                f"starts {who} (AssertionError: Node._perform_substitutions asserts the file exists)")
+    return f'launch only warns "Parameter file path is not a file" and starts {who} without it'
 
 
 @rule("P102", "parameter-file-not-installed")
@@ -46,7 +55,7 @@ def not_installed(ctx: CheckContext) -> Iterator[Diagnostic]:
                 yield Diagnostic(
                     "P102", src.span,
                     f'parameter file "{_rel(src.source)}" is in the source tree but is not installed, '
-                    f'so "{src.path}" will not exist at run time',
+                    f'so "{src.path}" will not exist at run time; {_consequence(src, node)}',
                     help=hint or "install it (CMake install(DIRECTORY ...) or setup.py data_files)",
                     key=src.path or "")
 

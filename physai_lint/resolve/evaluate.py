@@ -78,6 +78,9 @@ class Evaluator:
         self.on_dirname: Callable[[Span | None, Scope], None] | None = None
         # temporary files that substitutions (nav2_common RewrittenYaml ...) write: path -> file
         self.virtual: dict[str, Any] = {}
+        # Files a substitution opens (nav2_common RewrittenYaml/ReplaceString) that do not exist
+        # after install: path -> (status "missing"/"not_installed", workspace source or None).
+        self.unopened: dict[str, tuple[str, str | None]] = {}
         # what those substitutions computed, by their inputs (nav2 hands one file to every server)
         self.file_memo: dict[tuple[Any, ...], Any] = {}
         self.env_set: set[str | None] = set()  # variables a SetEnvironmentVariable wrote (None: unknown)

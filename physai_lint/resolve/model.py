@@ -51,6 +51,9 @@ class ResolvedParamFile:
     # rcl reads from it, positions mapped back to the source YAML; ``derived_from`` is that source.
     model: Any = field(default=None, compare=False, repr=False)
     derived_from: str | None = None
+    # The substitution that opens ``path`` while launch runs ("RewrittenYaml", "ReplaceString"):
+    # a file it cannot open fails the launch (FileNotFoundError), not only the node.
+    opened_by: str | None = None
 
 
 @fast_init

@@ -272,6 +272,8 @@ def _read_source(ev: Evaluator, path: str) -> tuple[str, str, VirtualFile | None
     if pk is None:
         return None
     loc = pk.locate(path)
+    if loc.status in ("missing", "not_installed"):
+        ev.unopened[path] = (loc.status, loc.source)
     if loc.status != "ok":
         return None
     real = loc.source or path
@@ -764,7 +766,8 @@ def _param_model(vf: VirtualFile, distro: str) -> ParamFileModel | None:
         if got is None:
             if type(p) is FileParam:
                 got = FileParam(p.name, p.value, p.kind, p.raw, span(p.value_span), span(p.key_span),
-                                p.quoted, p.launch_value)
+                                p.quoted, p.launch_value,
+                                tuple(span(x) for x in p.item_spans) if p.item_spans else None)
             else:
                 got = _remap(p, span, memo)
             params[id(p)] = got
@@ -772,7 +775,7 @@ def _param_model(vf: VirtualFile, distro: str) -> ParamFileModel | None:
 
     def unknown(p: Any) -> Any:
         if type(p) is FileParam:
-            return FileParam(p.name, None, p.kind, p.raw, p.value_span, p.key_span, p.quoted, None)
+            return FileParam(p.name, None, p.kind, p.raw, p.value_span, p.key_span, p.quoted, None, p.item_spans)
         return dataclasses.replace(p, value=None, launch_value=None)
 
     ops = []
@@ -857,7 +860,7 @@ def _model_shapes_known() -> bool:
 
         _SHAPES.append(
             names(FileParam) == ("name", "value", "kind", "raw", "value_span", "key_span", "quoted",
-                                 "launch_value")
+                                 "launch_value", "item_spans")
             and names(NodeBlock) == ("key", "key_span", "params", "nested", "params_key_span",
                                      "params_key_exact")
             and names(ParamFileModel) == ("path", "blocks", "diagnostics", "ops", "ok",

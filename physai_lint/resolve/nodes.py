@@ -133,13 +133,30 @@ class NodeBuilder:
                                          model=model, derived_from=source)
         return ResolvedParamFile(path, source, status, span, origin, allow_substs)  # type: ignore[arg-type]
 
+    def _unopened(self, value: v.Value, scope: Scope) -> ResolvedParamFile | None:
+        """A RewrittenYaml / ReplaceString whose source file does not exist after install: launch
+        fails when the substitution opens it."""
+        if len(value) != 1 or not isinstance(value[0], (v.RewrittenYaml, v.ReplaceString)):
+            return None
+        part = value[0]
+        path = self.inst.ev.eval(part.path, scope)
+        if path is None or path not in self.inst.ev.unopened:
+            return None
+        status, source = self.inst.ev.unopened[path]
+        span = part.span or v.span_of(part.path)
+        if span is None:
+            return None
+        return ResolvedParamFile(path, source, status, span, "node",  # type: ignore[arg-type]
+                                 opened_by=type(part).__name__)
+
     def _own_params(self, sources: tuple[ir.ParamSource, ...], scope: Scope, key: str
                     ) -> list[ParamSourceR]:
         out: list[ParamSourceR] = []
         for src in sources:
             if isinstance(src, ir.ParamFile):
                 path = self.inst.ev.eval(src.path, scope)
-                out.append(self._file(path, src.span, "node", src.allow_substs, scope))
+                unopened = self._unopened(src.path, scope) if path is None else None
+                out.append(unopened or self._file(path, src.span, "node", src.allow_substs, scope))
             elif isinstance(src, ir.ParamDict):
                 params = tuple(resolve_pvalue(e.name, e.value, lambda x: self.inst.ev.eval(x, scope),
                                               e.span) for e in src.entries)

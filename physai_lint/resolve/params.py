@@ -91,14 +91,23 @@ def resolve_pvalue(
         text = evaluate(pv.value)
         if text is None:
             return ResolvedParam(name, None, span, None, "yaml")
+        scalar = (pv.value_type or "")[len("list_of_"):] if (pv.value_type or "").startswith("list_of_") \
+            else pv.value_type
         if pv.sep is not None:
             parts = text.split(pv.sep)
-            if pv.value_type == "str":
+            if scalar == "str":
                 return ResolvedParam(name, parts, span, text, "forced")
+            if scalar in _COERCE:
+                coerced = [_coerce(x, scalar) for x in parts]
+                if any(x is None for x in coerced):
+                    return ResolvedParam(name, None, span, text, "forced")  # launch raises ValueError
+                return ResolvedParam(name, coerced, span, text, "forced")
             typed = [yaml_type(x) for x in parts]
             return ResolvedParam(name, _plain(typed), span, text, "yaml")
         if pv.value_type == "str":
             return ResolvedParam(name, text, span, text, "forced")
+        if pv.value_type in _COERCE:
+            return ResolvedParam(name, _coerce(text, pv.value_type), span, text, "forced")
         return ResolvedParam(name, yaml_type(text), span, text, "yaml")
     if isinstance(pv, v.PList):
         items = [resolve_pvalue(name, item, evaluate, span).value for item in pv.items]
@@ -106,6 +115,22 @@ def resolve_pvalue(
             return ResolvedParam(name, None, span, None, "python")
         return ResolvedParam(name, _normalize_list(tuple(items)), span, None, "python")
     return ResolvedParam(name, None, span, None, "python")
+
+
+# ``ParameterValue(..., value_type=float)`` / XML ``type="float"``: launch's ``coerce_to_type``
+# converts the performed text with ``float()`` / ``int()``, a bool by YAML rules (launch
+# utilities/type_utils.py); text that does not convert raises ValueError (the value is unknown here).
+_COERCE = ("float", "int", "bool")
+
+
+def _coerce(text: str, kind: str) -> Any:
+    if kind == "bool":
+        value = yaml_type(text)
+        return value if isinstance(value, bool) else None
+    try:
+        return float(text) if kind == "float" else int(text)
+    except ValueError:
+        return None
 
 
 def rcl_cli_text(value: ParamValue) -> str | None:

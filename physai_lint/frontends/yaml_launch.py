@@ -1,8 +1,9 @@
 """YAML launch files -> IR, read with ``yaml.compose`` (libyaml when available) for positions.
 
-Only the node graph is built, never Python objects for the whole document; anchors/aliases are
-refused (X001) so an alias bomb costs nothing. Duplicate mapping keys give X006 (the last wins,
-as with ``yaml.safe_load``).
+Only the node graph is built, never Python objects for the whole document. Anchors, aliases and
+merge keys (``<<: *base``) are followed as launch's ``yaml.safe_load`` does, within a budget of
+node visits: an alias bomb exceeds it and gives X001 instead of expanding. Duplicate mapping keys
+give X006 (the last wins, as with ``yaml.safe_load``).
 """
 from __future__ import annotations
 
@@ -21,7 +22,15 @@ _Loader: Any = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
 _STR = "tag:yaml.org,2002:str"
 
 
+_MERGE = "tag:yaml.org,2002:merge"
+# Node visits one launch file may take with its aliases expanded: thousands for a large real file,
+# billions for an alias bomb.
+MAX_VISITS = 200_000
+
+
 class _Alias(Exception):
+    """Aliases expand the document past ``MAX_VISITS``."""
+
     def __init__(self, node: yaml.Node) -> None:
         super().__init__("alias")
         self.node = node
@@ -32,7 +41,8 @@ class _Reader:
         self.path = path
         self.text = text
         self.starts = [0] + [m.end() for m in re.finditer("\n", text)]
-        self.seen: set[int] = set()
+        self.visits = 0
+        self.duplicates: set[tuple[int, str]] = set()
         self.diags: list[Diagnostic] = []
 
     def offset(self, mark: Any) -> int:
@@ -47,21 +57,55 @@ class _Reader:
                     node.end_mark.line + 1, node.end_mark.column + 1)
 
     def visit(self, node: yaml.Node) -> None:
-        if id(node) in self.seen:
+        self.visits += 1
+        if self.visits > MAX_VISITS:
             raise _Alias(node)
-        self.seen.add(id(node))
 
-    def pairs(self, node: yaml.MappingNode) -> list[tuple[yaml.ScalarNode, yaml.Node]]:
-        """Key/value pairs with duplicates reported (X006) and dropped, the last one kept."""
+    def merged(self, value: yaml.Node) -> list[tuple[yaml.ScalarNode, yaml.Node]]:
+        """The pairs a merge key (``<<: *base`` / ``<<: [*a, *b]``) brings, as SafeConstructor's
+        ``flatten_mapping`` does: earlier mappings of a list win over later ones."""
+        sources = value.value if isinstance(value, yaml.SequenceNode) else [value]
+        out: list[tuple[yaml.ScalarNode, yaml.Node]] = []
+        taken: set[str] = set()
+        for src in sources:
+            if not isinstance(src, yaml.MappingNode):
+                continue
+            for k, v in self.pairs(src, report=False):
+                name = str(k.value)
+                if name not in taken:
+                    taken.add(name)
+                    out.append((k, v))
+        return out
+
+    def pairs(self, node: yaml.MappingNode, report: bool = True) -> list[tuple[yaml.ScalarNode, yaml.Node]]:
+        """Key/value pairs with duplicates reported (X006) and dropped, the last one kept; merged
+        pairs come first, so the mapping's own keys override them."""
         self.visit(node)
         last: dict[str, int] = {}
         items: list[tuple[yaml.ScalarNode, yaml.Node]] = []
+        own = []
         for key, value in node.value:
+            if isinstance(key, yaml.ScalarNode) and key.tag == _MERGE:
+                for k, v in self.merged(value):
+                    last[str(k.value)] = len(items)
+                    items.append((k, v))
+            else:
+                own.append((key, value))
+        merged = set(last)
+        for key, value in own:
             self.visit(key)
             name = str(key.value) if isinstance(key, yaml.ScalarNode) else ""
-            if name in last:
-                self.diags.append(Diagnostic("X006", self.span(key), f'duplicate key "{name}"',
-                                             "give each key once; the last one wins", key=name))
+            if name in merged:
+                merged.discard(name)
+                items[last[name]] = (key, value)
+            elif name in last:
+                if not report:
+                    items[last[name]] = (key, value)
+                    continue
+                if (key.start_mark.index, name) not in self.duplicates:  # once, however often aliased
+                    self.duplicates.add((key.start_mark.index, name))
+                    self.diags.append(Diagnostic("X006", self.span(key), f'duplicate key "{name}"',
+                                                 "give each key once; the last one wins", key=name))
                 items[last[name]] = (key, value)
             else:
                 last[name] = len(items)
@@ -191,7 +235,8 @@ def parse_yaml_launch(path: str, text: str) -> FrontendResult:
         tree = reader.element("launch", pairs[0][0], pairs[0][1], None)
     except _Alias as alias:
         return FrontendResult(None, [Diagnostic(
-            "X001", reader.span(alias.node), "YAML anchors and aliases are not supported in "
-            "launch files", "write the repeated part out", key="alias")])
+            "X001", reader.span(alias.node), f"YAML aliases expand this launch file past "
+            f"{MAX_VISITS} nodes (an alias bomb?); it was not read", "write the repeated parts "
+            "out, or reuse fewer nested anchors", key="alias")])
     launch, diags = build_launch_file(path, "yaml", tree)
     return FrontendResult(launch, reader.diags + diags)

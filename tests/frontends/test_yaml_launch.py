@@ -65,14 +65,33 @@ def test_syntax_error_is_x001_with_line_and_column() -> None:
 
 
 def test_alias_bomb_is_refused_quickly() -> None:
-    lines = ["a0: &a0 [x, x, x, x, x, x, x, x, x]"]
-    lines += [f"a{i}: &a{i} [" + ", ".join([f"*a{i - 1}"] * 9) + "]" for i in range(1, 10)]
-    text = "\n".join(lines) + "\nlaunch:\n- log: {message: *a9}\n"
-    result = parse_yaml_launch(F, text)
+    lines = ["launch:", "- log: {message: &a0 [x, x, x, x, x, x, x, x, x]}"]
+    lines += [f"- log: {{message: &a{i} [" + ", ".join([f"*a{i - 1}"] * 9) + "]}" for i in range(1, 10)]
+    result = parse_yaml_launch(F, "\n".join(lines) + "\n")
     assert result.launch is None and result.diagnostics[0].code == "X001"
-    inner = parse_yaml_launch(F, "launch:\n- log: &m {message: hi}\n- log: *m\n")
-    assert inner.launch is None
-    assert "alias" in inner.diagnostics[0].message
+    assert "alias" in result.diagnostics[0].message
+
+
+def test_aliases_and_merge_keys_are_followed_like_safe_load() -> None:
+    """launch_yaml reads the file with yaml.safe_load: aliases repeat the anchored node, a merge key
+    (<<) brings the anchored mapping's keys, which the mapping's own keys override."""
+    text = ("launch:\n"
+            "- node: &base {pkg: demo_nodes_cpp, exec: talker, name: a, namespace: ns}\n"
+            "- node:\n    <<: *base\n    name: b\n"
+            "- log: &m {message: hi}\n- log: *m\n")
+    result = parse_yaml_launch(F, text)
+    assert result.launch is not None and not result.diagnostics
+    nodes = [a for a in result.launch.actions if isinstance(a, ir.NodeAction)]
+    assert [(ir_text(n.name), ir_text(n.namespace), ir_text(n.executable)) for n in nodes] == [
+        ("a", "ns", "talker"), ("b", "ns", "talker")]
+    assert sum(isinstance(a, ir.Log) for a in result.launch.actions) == 2
+    assert unknown_markup(result.launch.markup, "yaml") == []  # type: ignore[arg-type]
+
+
+def ir_text(value: object) -> str:
+    from physai_lint.model.values import literal_of
+
+    return str(literal_of(value))  # type: ignore[arg-type]
 
 
 def test_root_must_be_launch_mapping() -> None:

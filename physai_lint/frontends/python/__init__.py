@@ -32,7 +32,7 @@ from .convert_actions import ActionBuilder
 from .core import Signal
 from .evaluator import Abort, Evaluator
 from .facts import call_facts, undefined_names
-from .runtime import Alternatives, LObj, Opaque, UserFunc
+from .runtime import Alternatives, LObj, Opaque, Partial, UserFunc
 
 __all__ = ["parse_python_launch", "specialize"]
 
@@ -72,7 +72,7 @@ def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | N
     spans = ev.main.spans
     result: Any = None
     defined = _module_functions(tree.body)
-    has_gld = "generate_launch_description" in defined
+    has_gld = "generate_launch_description" in defined or ("*" in defined and "generate_test_description" not in defined)
     # launch_testing's entry point when there is no generate_launch_description: `launch_test`
     # calls it and starts the description it returns (alone, or first of a (description, dict))
     has_gtd = not has_gld and "generate_test_description" in defined
@@ -87,6 +87,9 @@ def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | N
     entry = "generate_test_description" if has_gtd else "generate_launch_description"
     gld = ev.main.scope.vars.get(entry)
     runs = has_gld or has_gtd
+    bound: tuple[list[Any], dict[str, Any]] = ([], {})
+    if isinstance(gld, Partial):  # generate_launch_description = partial(make, 'front')
+        gld, bound = gld.func, (gld.args, gld.kwargs)
     if runs and result is None:
         if isinstance(gld, UserFunc):
             gld_span = spans.of(gld.node)
@@ -94,7 +97,7 @@ def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | N
             required = gld.node.args.args[:len(gld.node.args.args) - len(gld.node.args.defaults)]
             given = [Opaque(f"{a.arg}, given by launch_testing", gld_span) for a in required] if has_gtd else []
             try:
-                result = call_user(ev, gld, given, {}, gld_span)
+                result = call_user(ev, gld, [*bound[0], *given], dict(bound[1]), gld_span)
             except RecursionError:
                 result = Opaque("the file is too deeply nested to evaluate", gld_span)
             if has_gtd and isinstance(result, tuple) and len(result) == 2:
@@ -142,16 +145,28 @@ def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | N
 
 
 def _module_functions(body: list[ast.stmt]) -> set[str]:
-    """The functions a module defines, also inside its module-level ``if``/``try``/``with``/loop
-    blocks (``try: ... def generate_test_description(): ... except ImportError: ...``): launch
-    only asks ``hasattr(module, 'generate_launch_description')``. Not those of classes or
-    functions."""
+    """The names a module binds to what may be a function, also inside its module-level
+    ``if``/``try``/``with``/loop blocks (``try: ... def generate_test_description(): ... except
+    ImportError: ...``): launch only asks ``hasattr(module, 'generate_launch_description')``, so an
+    assignment (``generate_launch_description = partial(make, 'front')``) or an import from a
+    shared module counts as much as a ``def``. A ``*`` import from a module that is not launch's
+    may bind anything (``"*"``). Not the names of classes or functions."""
     out: set[str] = set()
     stack = list(body)
     while stack:
         n = stack.pop()
         if isinstance(n, (ast.FunctionDef, ast.AsyncFunctionDef)):
             out.add(n.name)
+        elif isinstance(n, (ast.Assign, ast.AnnAssign)):
+            for target in n.targets if isinstance(n, ast.Assign) else [n.target]:
+                out.update(t.id for t in ast.walk(target) if isinstance(t, ast.Name))
+        elif isinstance(n, (ast.Import, ast.ImportFrom)):
+            for alias in n.names:
+                if alias.name != "*":
+                    out.add(alias.asname or alias.name.split(".")[0])
+                elif isinstance(n, ast.ImportFrom) and (n.level or (n.module or "").split(".")[0]
+                                                        not in ("launch", "launch_ros")):
+                    out.add("*")
         elif isinstance(n, (ast.If, ast.For, ast.AsyncFor, ast.While, ast.With, ast.AsyncWith)):
             stack.extend([*n.body, *getattr(n, "orelse", ())])
         elif isinstance(n, ast.Try) or type(n).__name__ == "TryStar":

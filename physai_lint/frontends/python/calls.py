@@ -20,6 +20,7 @@ from . import api, bounds, builtin_calls, classes, symbolic
 from .convert_values import to_value
 from .runtime import (
     BoundMethod,
+    Partial,
     BoundUser,
     ClassValue,
     ContextSym,
@@ -171,6 +172,8 @@ def call(ev: Evaluator, func: Any, args: list[Any], kwargs: dict[str, Any], node
         if qual is not None and qual not in api.FUNCTIONS:
             return make_lobj(ev, qual, args, kwargs, node, scope, arg_spans, kw_spans)
         return call_ref(ev, qual or func.qual, args, kwargs, span)
+    if isinstance(func, Partial):
+        return call_user(ev, func.func, *func.bind(args, kwargs), span, written=True)
     if isinstance(func, BoundMethod):
         return call_method(ev, func.obj, func.name, args, kwargs, span)
     if isinstance(func, BoundUser):
@@ -314,6 +317,11 @@ def call_ref(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any], 
     known = classes.decorator_call(qual, args, kwargs, span)
     if known is not None:
         return known
+    if qual == "functools.partial" and args and isinstance(args[0], (UserFunc, Partial)):
+        inner = args[0]
+        if isinstance(inner, Partial):
+            return Partial(inner.func, *inner.bind(list(args[1:]), dict(kwargs)))
+        return Partial(inner, list(args[1:]), dict(kwargs))
     if qual in ("ament_index_python.packages.get_package_share_directory", "ament_index_python.packages.get_package_prefix"):
         pkg = args[0] if args else kwargs.get("package_name")
         kind = "share" if qual.endswith("share_directory") else "prefix"
@@ -545,11 +553,17 @@ def make_lobj(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any],
         fn = obj.arg(0, "function")
         fargs = obj.arg(1, "args") or []
         fkwargs = obj.arg(2, "kwargs") or {}
+        # launch calls function(context, *args, **kwargs); a partial's own positional arguments
+        # come before the context (OpaqueFunction(function=partial(setup, robot='a')))
+        bound: tuple[list[Any], dict[str, Any]] = ([], {})
+        if isinstance(fn, Partial):
+            fn, bound = fn.func, (fn.args, fn.kwargs)
         if isinstance(fn, UserFunc) and isinstance(fargs, (list, tuple)) and isinstance(fkwargs, dict):
             start, peeks, undecided = len(ev.performed), len(ev.peeked), ev.undecided
             ev.guarded += 1  # the body runs when launch executes the action, if it does
             try:
-                obj.extra["result"] = call_user(ev, fn, [ContextSym(), *fargs], dict(fkwargs), span)
+                obj.extra["result"] = call_user(ev, fn, [*bound[0], ContextSym(), *fargs],
+                                                {**bound[1], **fkwargs}, span)
             finally:
                 ev.guarded -= 1
             obj.extra["performed"] = tuple(ev.performed[start:])

@@ -131,6 +131,18 @@ class UserFunc:
 
 
 @dataclass(eq=False)
+class Partial:
+    """``functools.partial(func, *args, **kwargs)`` of a function of the file."""
+
+    func: UserFunc
+    args: list[Any]
+    kwargs: dict[str, Any]
+
+    def bind(self, args: list[Any], kwargs: dict[str, Any]) -> tuple[list[Any], dict[str, Any]]:
+        return [*self.args, *args], {**self.kwargs, **kwargs}
+
+
+@dataclass(eq=False)
 class BoundMethod:
     obj: Any
     name: str

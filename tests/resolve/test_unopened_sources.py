@@ -50,3 +50,32 @@ def test_a_missing_global_parameter_file_fails_the_launch(demo_findings: Any) ->
     assert _found(demo_findings, "config", "P101") == [
         (16, "SetParametersFromFile hands it to every node after it, and launch fails when it starts "
              "/map_server (AssertionError: Node._perform_substitutions asserts the file exists)")]
+
+
+ROOT_KEY = """import os
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+from nav2_common.launch import RewrittenYaml
+
+
+def generate_launch_description():
+    configured = RewrittenYaml(source_file=os.path.join(get_package_share_directory('demo'), 'config', 'nav2.yaml'),
+                               root_key=LaunchConfiguration('namespace'), param_rewrites={}, convert_types=True)
+    return LaunchDescription([
+        DeclareLaunchArgument('namespace', default_value='robot1'),
+        Node(package='nav2_amcl', executable='amcl', name='amcl', namespace=LaunchConfiguration('namespace'),
+             parameters=[configured]),
+    ])
+"""
+
+
+def test_values_of_a_rewritten_file_are_checked_when_only_the_launch_file_is(demo_findings: Any) -> None:
+    """Checking the launch file alone: the RewrittenYaml source is checked with it (its values reach
+    /robot1/amcl through the rewritten copy), as a file given directly to the node is."""
+    files = {"launch/a.launch.py": ROOT_KEY,
+             "config/nav2.yaml": "amcl:\n  ros__parameters:\n    transform_tolerance: 1\n"}
+    found = demo_findings(files, "launch/a.launch.py", "P105")
+    assert [(line, 'parameter "transform_tolerance" of /robot1/amcl' in msg) for line, msg in found] == [(3, True)]

@@ -8,6 +8,7 @@ from typing import Iterator
 from physai_lint.checks._util import python_facts
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic
+from physai_lint.checks.markup import _PY_NEWER
 from physai_lint.model.launch import NameFact, TypeFact
 
 NODE_CLASSES = ("launch_ros.actions.Node", "launch_ros.actions.LifecycleNode",
@@ -36,7 +37,29 @@ def parameters_not_a_list(ctx: CheckContext) -> Iterator[Diagnostic]:
 
 @rule("L005", "undefined-name")
 def undefined_name(ctx: CheckContext) -> Iterator[Diagnostic]:
+    exports = None
     for path, facts in python_facts(ctx):
+        used = {c.qualname for c in facts.calls}
+        for module, name, span in getattr(facts, "imports", ()) if ctx.distro in _EXPORT_DISTROS else ():
+            exports = exports if exports is not None else _exports()
+            table = exports.get(ctx.distro, {})
+            if module not in table or name in table[module] or f"{module}.{name}" in used and \
+                    f"{module}.{name}" in _PY_NEWER:
+                continue  # a newer substitution class the file uses: L114 reports it where it is used
+            where = sorted(m for m, names in table.items() if name in names and m != module)
+            newer = sorted(d for d, t in exports.items() if name in t.get(module, ()))
+            if where:
+                why, fix = f"it is in {where[0]}", f'import it from there: "from {where[0]} import {name}"'
+            elif newer:
+                why, fix = (f"it was added in {newer[0]}",
+                            f'use what {ctx.distro} has, or target {newer[0]} with --distro')
+            else:
+                why, fix = "", "check the name and the distro"
+            yield Diagnostic(
+                "L005", span,
+                f'{module} has no "{name}" in {ctx.distro}' + (f" ({why})" if why else "")
+                + f"; loading the file raises ImportError: cannot import name '{name}'",
+                help=fix, key=f"import:{module}:{name}")
         for fact in facts.undefined_names:
             when = (f"{fact.function}() raises NameError when it reaches this line" if fact.function
                     else "loading the file raises NameError")
@@ -44,6 +67,22 @@ def undefined_name(ctx: CheckContext) -> Iterator[Diagnostic]:
                 "L005", fact.span,
                 f'name "{fact.name}" is used but never imported or defined; {when}',
                 help=_undefined_help(fact), key=fact.name)
+
+
+# The distros whose launch exports are known (physai_lint/data/launch-exports.json): released
+# branches; rolling and the distros made from it after the table was extracted are not checked.
+_EXPORT_DISTROS = ("humble", "jazzy")
+
+
+def _exports() -> dict[str, dict[str, frozenset[str]]]:
+    import json
+    import os
+
+    path = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "data",
+                        "launch-exports.json")
+    with open(path, encoding="utf-8") as f:
+        data = json.load(f)
+    return {d: {m: frozenset(n) for m, n in t.items()} for d, t in data.items() if not d.startswith("_")}
 
 
 def _undefined_help(fact: NameFact) -> str:

@@ -392,6 +392,10 @@ class PythonFacts:
     # fails there when the package does not exist, whether or not the path is used. Not those in a
     # ``try`` with handlers, in an undecided branch, or in a function launch calls later.
     lookups: tuple[Value, ...] = ()
+    # ``from launch_ros.actions import Name`` of the launch packages' public modules, each with the
+    # span of the imported name; not those in a ``try`` body with handlers (a compatibility
+    # fallback) or in code the evaluation never ran.
+    imports: tuple[tuple[str, str, Span], ...] = ()
 
 
 @dataclass(frozen=True, slots=True)

@@ -31,7 +31,7 @@ from .calls import call_user
 from .convert_actions import ActionBuilder
 from .core import Signal
 from .evaluator import Abort, Evaluator
-from .facts import call_facts, undefined_names
+from .facts import call_facts, launch_imports, undefined_names
 from .runtime import Alternatives, LObj, Opaque, Partial, UserFunc
 
 __all__ = ["parse_python_launch", "specialize"]
@@ -125,8 +125,9 @@ def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | N
         dead = ev.dead_lines(nodes)
         calls = tuple(c for c in call_facts(nodes, spans, ev.kw_kinds) if not _within(c.span, dead))
         names = tuple(n for n in undefined_names(tree, nodes, spans, text) if not _within(n.span, dead))
+        imports = tuple(i for i in launch_imports(tree, spans) if not _within(i[2], dead))
     except RecursionError:
-        calls, names = (), ()
+        calls, names, imports = (), (), ()
     concats = tuple(sorted(ev.concats.values(), key=lambda c: (c.span.line, c.span.col, c.how)))
     # launch_testing files (`launch_test FILE`) define generate_test_description instead, and
     # launch_pytest modules (run by pytest) give their descriptions through @launch_pytest.fixture.
@@ -138,7 +139,7 @@ def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | N
     tested = tuple(sorted(ev.tests.values(), key=lambda c: (c.span.line, c.span.col, c.how)))
     refused = tuple(sorted(ev.call_errors.values(), key=lambda c: (c.span.line, c.span.col)))
     facts = PythonFacts(calls, names, concats, has_gld, is_test, wrong, tuple(sorted(ev.escaped)), tested,
-                        refused, tuple(ev.lookups))
+                        refused, tuple(ev.lookups), imports)
     launch = LaunchFile(path, "python", actions, python=facts, read_files=tuple(ev.read_files))
     convert_values.set_recorder(None)
     return FrontendResult(launch=launch, diagnostics=[])

@@ -233,3 +233,33 @@ def undefined_names(tree: ast.Module, nodes: list[ast.AST], spans: SpanMaker, te
         checker.check(stmt, [])
     checker.found.sort(key=lambda f: (f.span.line, f.span.col))
     return checker.found
+
+
+_LAUNCH_PACKAGES = ("launch", "launch_ros", "launch_xml", "launch_yaml")
+
+
+def launch_imports(tree: ast.Module, spans: SpanMaker) -> list[tuple[str, str, Span]]:
+    """``from <launch package module> import <name>`` anywhere in the file: (module, name, span of
+    the name), but not inside the body of a ``try`` with handlers (``try: from launch_ros.actions
+    import PushROSNamespace except ImportError: ...`` is how files support several distros)."""
+    out: list[tuple[str, str, Span]] = []
+
+    def walk(node: ast.AST, guarded: bool) -> None:
+        if isinstance(node, ast.ImportFrom) and not guarded and not node.level and node.module \
+                and node.module.split(".")[0] in _LAUNCH_PACKAGES:
+            for alias in node.names:
+                if alias.name != "*":
+                    out.append((node.module, alias.name, spans.of(alias) if hasattr(alias, "lineno")
+                                else spans.of(node)))
+        if isinstance(node, ast.Try) or type(node).__name__ == "TryStar":
+            caught = bool(node.handlers)  # type: ignore[attr-defined]
+            for child in node.body:  # type: ignore[attr-defined]
+                walk(child, guarded or caught)
+            for child in [*node.handlers, *node.orelse, *node.finalbody]:  # type: ignore[attr-defined]
+                walk(child, guarded)
+            return
+        for child in ast.iter_child_nodes(node):
+            walk(child, guarded)
+
+    walk(tree, False)
+    return out

@@ -216,7 +216,9 @@ def parse_yaml_launch(path: str, text: str) -> FrontendResult:
     try:
         root = yaml.compose(text, Loader=_Loader)
     except yaml.MarkedYAMLError as err:
-        mark = err.problem_mark or err.context_mark
+        from physai_lint.params.loader import error_mark
+
+        mark = error_mark(err)
         line, col = (mark.line + 1, mark.column + 1) if mark is not None else (1, 1)
         return FrontendResult(None, [Diagnostic(
             "X001", Span(path, line, col, line, col + 1),

@@ -454,7 +454,7 @@ def load_param_file(path: str, text: str, distro: str = "humble") -> ParamFileMo
             except _RclError as e:  # rcl's first error: the handler ran last in its branch
                 _fail(p, e)
     except yaml.MarkedYAMLError as exc:
-        mark = exc.problem_mark or exc.context_mark
+        mark = error_mark(exc)
         line = mark.line + 1 if mark is not None else 1
         col = mark.column + 1 if mark is not None else 1
         msg = " ".join(str(x) for x in (exc.context, exc.problem) if x)
@@ -547,3 +547,12 @@ def _fail(p: _Parser, e: _RclError) -> None:
     p.failed = True
     p.model.ok = False
     p.model.diagnostics.append(Diagnostic(e.code, e.span, e.message, e.help))
+
+
+def error_mark(exc: Any) -> Any:
+    """Where to report a YAML syntax error: where the parser noticed it, except when it ran into
+    the end of the file inside something never closed (an unterminated quote or bracket): there,
+    where that thing starts (libyaml's context mark)."""
+    if exc.context_mark is not None and "end of stream" in str(exc.problem or ""):
+        return exc.context_mark
+    return exc.problem_mark or exc.context_mark

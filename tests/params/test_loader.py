@@ -55,7 +55,7 @@ def test_structure_errors_exact_lines():
     assert codes(load("a:\n  ros__parameters:\n    x:\n      - {k: 1}\n")) == [("P104", 4)]
     m = load("/x:\n  /y:\n    ros__parameters:\n      z: 1\n")
     assert codes(m) == [("P104", 2)] and "/x//y" in m.diagnostics[0].message
-    assert codes(load("a:\n  ros__parameters:\n    x: 'unterminated\n")) == [("X001", 4)]
+    assert codes(load("a:\n  ros__parameters:\n    x: 'unterminated\n")) == [("X001", 3)]  # where the quote opens, not the end of the file
     assert codes(load("9node:\n  ros__parameters: {x: 1}\n")) == [("P104", 1)]
 
 

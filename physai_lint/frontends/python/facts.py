@@ -241,25 +241,28 @@ _LAUNCH_PACKAGES = ("launch", "launch_ros", "launch_xml", "launch_yaml")
 def launch_imports(tree: ast.Module, spans: SpanMaker) -> list[tuple[str, str, Span]]:
     """``from <launch package module> import <name>`` anywhere in the file: (module, name, span of
     the name), but not inside the body of a ``try`` with handlers (``try: from launch_ros.actions
-    import PushROSNamespace except ImportError: ...`` is how files support several distros)."""
+    import PushROSNamespace except ImportError: ...`` is how files support several distros).
+    Imports are statements: only statement lists are walked, not expressions."""
     out: list[tuple[str, str, Span]] = []
-
-    def walk(node: ast.AST, guarded: bool) -> None:
-        if isinstance(node, ast.ImportFrom) and not guarded and not node.level and node.module \
-                and node.module.split(".")[0] in _LAUNCH_PACKAGES:
-            for alias in node.names:
-                if alias.name != "*":
-                    out.append((node.module, alias.name, spans.of(alias) if hasattr(alias, "lineno")
-                                else spans.of(node)))
-        if isinstance(node, ast.Try) or type(node).__name__ == "TryStar":
-            caught = bool(node.handlers)  # type: ignore[attr-defined]
-            for child in node.body:  # type: ignore[attr-defined]
-                walk(child, guarded or caught)
-            for child in [*node.handlers, *node.orelse, *node.finalbody]:  # type: ignore[attr-defined]
-                walk(child, guarded)
-            return
-        for child in ast.iter_child_nodes(node):
-            walk(child, guarded)
-
-    walk(tree, False)
+    stack: list[tuple[list[ast.stmt], bool]] = [(tree.body, False)]
+    while stack:
+        body, guarded = stack.pop()
+        for node in body:
+            if isinstance(node, ast.ImportFrom):
+                if not guarded and not node.level and node.module \
+                        and node.module.split(".")[0] in _LAUNCH_PACKAGES:
+                    out.extend((node.module, alias.name, spans.of(alias)) for alias in node.names
+                               if alias.name != "*")
+            elif isinstance(node, ast.Try) or type(node).__name__ == "TryStar":
+                stack.append((node.body, guarded or bool(node.handlers)))  # type: ignore[attr-defined]
+                stack.extend((h.body, guarded) for h in node.handlers)  # type: ignore[attr-defined]
+                stack.extend(((node.orelse, guarded), (node.finalbody, guarded)))  # type: ignore[attr-defined]
+            elif type(node).__name__ == "Match":
+                stack.extend((case.body, guarded) for case in node.cases)  # type: ignore[attr-defined]
+            else:
+                for field in ("body", "orelse", "finalbody"):
+                    block = getattr(node, field, None)
+                    if isinstance(block, list) and block and isinstance(block[0], ast.stmt):
+                        stack.append((block, guarded))
+    out.sort(key=lambda i: (i[2].line, i[2].col))
     return out

@@ -223,12 +223,11 @@ class _Known:
         for a in actions:
             for cond in _conditions(a):
                 self.check(cond, fixed)
-            if getattr(a, "condition", None) is not None:
-                if isinstance(a, (ir.SetLaunchConfiguration, ir.Include)) or \
-                        (isinstance(a, ir.Group) and not a.scoped):
-                    self.forget(a, fixed)
-                if isinstance(a, ir.Group):
-                    self.walk(a.actions, dict(fixed) if a.scoped else {})
+            if getattr(a, "condition", None) is not None:  # it may not run: what it sets is unknown
+                inner = dict(fixed) if isinstance(a, ir.Group) and a.scoped else {}
+                self.forget(a, fixed)
+                if _children(a):
+                    self.walk(_children(a), inner)
                 continue
             if isinstance(a, ir.SetLaunchConfiguration):
                 name, value = literal_of(a.name), literal_of(a.value)

@@ -109,3 +109,19 @@ def test_markup_on_exit_shutdown_is_a_handler_of_the_process(tmp_path: Path, dem
     assert (handler.event, handler.target_id, handler.target_known) == ("on_process_exit", node.id, True)
     assert [type(a) for a in handler.actions] == [L.Shutdown]
     assert not any(isinstance(a, L.EventHandler) for a in actions[2:])  # "restart" makes none
+
+
+def test_an_on_exit_callable_that_cannot_be_followed_leaves_the_launch_known(tmp_path: Path, demo_package) -> None:
+    """A library's function given as on_exit stays out of the model, as before, instead of making
+    an unknown part that turns off the rules that need the whole launch (S201, ...)."""
+    from physai_lint.engine import build_project
+
+    launch = ("from launch import LaunchDescription\nfrom launch_ros.actions import Node\n"
+              "from my_helpers import restart\n\n\n"
+              "def generate_launch_description():\n"
+              "    return LaunchDescription([Node(package='demo_nodes_cpp', executable='talker', name='a',"
+              " on_exit=restart)])\n")
+    pkg = demo_package({"launch/c.launch.py": launch})
+    project = build_project(CheckOptions(paths=[str(pkg / "launch/c.launch.py")], workspace=str(tmp_path),
+                                         cache=False))
+    assert [r.opaque for r in project.launches] == [[]]

@@ -60,3 +60,15 @@ def test_values_set_before_a_condition_decide_it(demo_findings: Any) -> None:
 def test_launch_configuration_equals_after_a_set(demo_findings: Any) -> None:
     found = demo_findings({"launch/a.launch.py": PY}, "launch/a.launch.py", "L108")
     assert [(line, 'is "diff_drive" here (set at line 8)' in msg) for line, msg in found] == [(9, True)]
+
+
+def test_a_set_under_a_condition_anywhere_makes_the_value_unknown(demo_findings: Any) -> None:
+    """An OpaqueFunction that may run (it has a condition) and sets the configuration: after it,
+    the earlier value no longer decides anything."""
+    text = PY.replace("        LogInfo(msg='x',", """        OpaqueFunction(function=lambda context: [SetLaunchConfiguration('drive', 'ackermann')],
+                       condition=IfCondition(LaunchConfiguration('switch'))),
+        LogInfo(msg='x',""").replace(
+        "from launch.actions import LogInfo, SetLaunchConfiguration",
+        "from launch.actions import LogInfo, OpaqueFunction, SetLaunchConfiguration\n"
+        "from launch.conditions import IfCondition\nfrom launch.substitutions import LaunchConfiguration")
+    assert demo_findings({"launch/a.launch.py": text}, "launch/a.launch.py", "L108") == []

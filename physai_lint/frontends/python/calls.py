@@ -20,7 +20,6 @@ from . import api, bounds, builtin_calls, classes, symbolic
 from .convert_values import to_value
 from .runtime import (
     BoundMethod,
-    Partial,
     BoundUser,
     ClassValue,
     ContextSym,
@@ -32,6 +31,7 @@ from .runtime import (
     LObj,
     ModuleValue,
     Opaque,
+    Partial,
     Ref,
     SuperProxy,
     SymStr,

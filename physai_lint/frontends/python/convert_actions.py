@@ -175,9 +175,11 @@ class ActionBuilder:
         if api.short(obj.qual) not in _PROCESS_ACTIONS or isinstance(action, L.OpaqueAction):
             return []
         entities = obj.extra.get("entities_result", obj.kwargs.get("on_exit"))
-        if entities is None or isinstance(entities, (str, bool, int, float)) or \
-                (isinstance(entities, LObj) and api.is_substitution(entities.qual)):
-            return []  # none, or of a type launch refuses (reported by _check_text)
+        if "entities_result" not in obj.extra and not isinstance(entities, (list, tuple)) and not (
+                isinstance(entities, LObj) and entities.qual in api.ACTION_KINDS):
+            # none, one of a type launch refuses (_check_text), or a callable the evaluator cannot
+            # follow: left out, as before, rather than made an unknown part of the launch
+            return []
         span = obj.arg_span(-1, "on_exit")
         return [L.EventHandler(f"{action.id}/on_exit", span, action.condition, "on_process_exit",
                                action.id, True, self.actions(entities, span))]

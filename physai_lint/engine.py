@@ -223,9 +223,10 @@ def _param_sources(r: Any, composable_only: bool = False) -> set[str]:
     """Workspace parameter files that the nodes of a launch load (and that exist after install);
     ``composable_only``: those of its composable nodes, which launch_ros reads with PyYAML (rcl
     reads a node's through --params-file)."""
-    return {src for n in r.nodes if not composable_only or n.kind == "composable_node"
-            for s in n.param_sources if getattr(s, "status", None) == "ok"
-            for src in (getattr(s, "source", None) or getattr(s, "derived_from", None),) if src}
+    files = (getattr(s, "source", None) or getattr(s, "derived_from", None)  # RewrittenYaml: its source
+             for n in r.nodes if not composable_only or n.kind == "composable_node"
+             for s in n.param_sources if getattr(s, "status", None) == "ok")
+    return {f for f in files if f}
 
 
 def _all_param_sources(launches: list[Any]) -> set[str]:

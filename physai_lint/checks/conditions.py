@@ -230,23 +230,11 @@ class _Known:
                     self.walk(_children(a), inner)
                 continue
             if isinstance(a, ir.SetLaunchConfiguration):
-                name, value = literal_of(a.name), literal_of(a.value)
-                if name is None:
-                    fixed.clear()
-                elif value is None:
-                    fixed.pop(name, None)
-                else:
-                    fixed[name] = (value, a.span)
+                _set(fixed, a.name, a.value, a.span)
             elif isinstance(a, ir.Group):
                 inner = dict(fixed) if a.scoped else fixed
                 for k, v in a.launch_configurations:
-                    name, value = literal_of(k), literal_of(v)
-                    if name is None:
-                        inner.clear()
-                    elif value is None:
-                        inner.pop(name, None)
-                    else:
-                        inner[name] = (value, a.span)
+                    _set(inner, k, v, a.span)
                 self.walk(a.actions, inner)
             elif isinstance(a, (ir.Timer, ir.EventHandler)):
                 self.walk(a.actions, {})  # run later, after whatever the rest sets
@@ -282,6 +270,18 @@ class _Known:
                or _computed_dead(cond, domains, fixed))
         if why:
             self.found.append((cond, why))
+
+
+def _set(fixed: dict[str, tuple[str, Any]], name: Any, value: Any, span: Any) -> None:
+    """A configuration set to ``value``: known when both are literals; a name not known statically
+    may be any, so nothing stays known."""
+    key, text = literal_of(name), literal_of(value)
+    if key is None:
+        fixed.clear()
+    elif text is None:
+        fixed.pop(key, None)
+    else:
+        fixed[key] = (text, span)
 
 
 def _conditions(a: Any) -> list[Any]:

@@ -85,7 +85,7 @@ def _scan_extensions(packages: Any) -> frozenset[str]:
 
 
 # The Python classes of those substitutions (launch.substitutions), by their frontend names.
-_PY_NEWER = {
+PY_NEWER = {
     "launch.substitutions.EqualsSubstitution": "equals",
     "launch.substitutions.NotEqualsSubstitution": "not-equals",
     "launch.substitutions.IfElseSubstitution": "if",
@@ -94,7 +94,7 @@ _PY_NEWER = {
     "launch.substitutions.FileContent": "file-content",
     "launch.substitutions.LaunchLogDir": "launch_log_dir",
 }
-_PY_NAME = {v: k.rsplit(".", 1)[-1] for k, v in _PY_NEWER.items()}
+_PY_NAME = {v: k.rsplit(".", 1)[-1] for k, v in PY_NEWER.items()}
 
 
 def _subst_name(part: Any) -> str | None:
@@ -121,7 +121,7 @@ def substitution_not_in_distro(ctx: CheckContext) -> Iterator[Diagnostic]:
         found: list[tuple[str, Any]] = []
         if lf.format == "python":
             if lf.python is not None:
-                found = [(_PY_NEWER[c.qualname], c.span) for c in lf.python.calls if c.qualname in _PY_NEWER]
+                found = [(PY_NEWER[c.qualname], c.span) for c in lf.python.calls if c.qualname in PY_NEWER]
         else:
             for obj in ir_objects(ctx, path):
                 name = _subst_name(obj)

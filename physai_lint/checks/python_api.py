@@ -8,7 +8,7 @@ from typing import Iterator
 from physai_lint.checks._util import python_facts
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic
-from physai_lint.checks.markup import _PY_NEWER
+from physai_lint.checks.markup import PY_NEWER
 from physai_lint.model.launch import NameFact, TypeFact
 
 NODE_CLASSES = ("launch_ros.actions.Node", "launch_ros.actions.LifecycleNode",
@@ -37,14 +37,15 @@ def parameters_not_a_list(ctx: CheckContext) -> Iterator[Diagnostic]:
 
 @rule("L005", "undefined-name")
 def undefined_name(ctx: CheckContext) -> Iterator[Diagnostic]:
-    exports = None
+    from physai_lint.workspace.distro import launch_exports
+
     for path, facts in python_facts(ctx):
         used = {c.qualname for c in facts.calls}
         for module, name, span in getattr(facts, "imports", ()) if ctx.distro in _EXPORT_DISTROS else ():
-            exports = exports if exports is not None else _exports()
+            exports = launch_exports()
             table = exports.get(ctx.distro, {})
             if module not in table or name in table[module] or f"{module}.{name}" in used and \
-                    f"{module}.{name}" in _PY_NEWER:
+                    f"{module}.{name}" in PY_NEWER:
                 continue  # a newer substitution class the file uses: L114 reports it where it is used
             where = sorted(m for m, names in table.items() if name in names and m != module)
             newer = sorted(d for d, t in exports.items() if name in t.get(module, ()))
@@ -72,17 +73,6 @@ def undefined_name(ctx: CheckContext) -> Iterator[Diagnostic]:
 # The distros whose launch exports are known (physai_lint/data/launch-exports.json): released
 # branches; rolling and the distros made from it after the table was extracted are not checked.
 _EXPORT_DISTROS = ("humble", "jazzy")
-
-
-def _exports() -> dict[str, dict[str, frozenset[str]]]:
-    import json
-    import os
-
-    path = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "data",
-                        "launch-exports.json")
-    with open(path, encoding="utf-8") as f:
-        data = json.load(f)
-    return {d: {m: frozenset(n) for m, n in t.items()} for d, t in data.items() if not d.startswith("_")}
 
 
 def _undefined_help(fact: NameFact) -> str:

@@ -99,10 +99,7 @@ class _Reader:
                 merged.discard(name)
                 items[last[name]] = (key, value)
             elif name in last:
-                if not report:
-                    items[last[name]] = (key, value)
-                    continue
-                if (key.start_mark.index, name) not in self.duplicates:  # once, however often aliased
+                if report and (key.start_mark.index, name) not in self.duplicates:  # once, however often aliased
                     self.duplicates.add((key.start_mark.index, name))
                     self.diags.append(Diagnostic("X006", self.span(key), f'duplicate key "{name}"',
                                                  "give each key once; the last one wins", key=name))

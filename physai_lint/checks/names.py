@@ -26,18 +26,18 @@ def duplicate_node_name(ctx: CheckContext) -> Iterator[Diagnostic]:
             # evaluated (an unknown PythonExpression, say) often excludes the other node.
             if node.kind == "process" or node.active is not True or not node.fqn or not _named(node):
                 continue
-            if node.kind == "composable_node":
-                continue  # N107 covers components; a component and a node are still checked below
             earlier = first.setdefault(node.fqn, [])
-            if not earlier:
-                earlier.append(node)
+            # Two components of one container are N107's; a component and a process, or
+            # components of two containers, are two nodes of one name in the graph.
+            others = [p for p in earlier if not _same_container(p, node)]
+            earlier.append(node)
+            if not others:
                 continue
             exits = exits or _Edges(launch)
             # A node started again once the other exited (OnProcessExit: the respawn pattern)
             # never runs beside it, unless launch restarts that one itself (respawn=).
-            prev = next((p for p in earlier if not _restarted_after(exits, p, node)
+            prev = next((p for p in others if not _restarted_after(exits, p, node)
                          and not _restarted_after(exits, node, p)), None)
-            earlier.append(node)
             if prev is None:
                 continue
             span = node.spans.get("name", node.span)
@@ -45,6 +45,9 @@ def duplicate_node_name(ctx: CheckContext) -> Iterator[Diagnostic]:
                 continue
             seen.add(span)
             p = prev
+            if "composable_node" in (node.kind, p.kind):
+                yield _component_twice(node, p, span)
+                continue
             sites = _include_sites(launch, node) if p.span == node.span else []
             if len(sites) > 1:  # one line launched twice because its file is included twice
                 yield Diagnostic(
@@ -67,6 +70,34 @@ def duplicate_node_name(ctx: CheckContext) -> Iterator[Diagnostic]:
                 help="give each node its own name or namespace (PushRosNamespace / namespace=)",
                 related=(Related(p.spans.get("name", p.span), "first launched here"),),
                 key=node.fqn)
+
+
+def _same_container(a: NodeInstance, b: NodeInstance) -> bool:
+    return a.kind == b.kind == "composable_node" and a.container == b.container
+
+
+def _where(node: NodeInstance) -> str:
+    if node.kind == "composable_node":
+        return f'a component of container "{node.container}"' if node.container else "a component"
+    return "a container" if node.kind == "container" else "a node"
+
+
+def _component_twice(node: NodeInstance, p: NodeInstance, span: Any) -> Diagnostic:
+    """N101 when one of the two is a component: two containers load one name, or a component
+    is named like a node (its own container included)."""
+    hint = ""
+    cont_ns = (node.container or "").rpartition("/")[0] or "/"
+    if node.kind == "composable_node" and node.namespace == "/" and node.container and cont_ns != "/":
+        hint = (" (a component does not take its container's namespace: give it "
+                "namespace= or push one around the container)")
+    return Diagnostic(
+        "N101", span,
+        f'node "{node.fqn}" is {_where(node)} here and {_where(p)} at line {p.span.line}; '
+        f"services, parameters and topics of the two collide{hint}{name_note((node, p))}",
+        help="give each node its own name or namespace (namespace= on the composable node, or "
+             "PushRosNamespace around it)",
+        related=(Related(p.spans.get("name", p.span), "first started here"),),
+        key=node.fqn)
 
 
 def _repeated(launch: LaunchResult, node: NodeInstance, sites: list[Any]) -> Diagnostic:

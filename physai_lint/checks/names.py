@@ -12,6 +12,7 @@ from physai_lint.checks.topics import graphs
 from physai_lint.interfaces.naming import default_named, name_note
 from physai_lint.model.findings import Diagnostic, Related
 from physai_lint.resolve import names
+from physai_lint.resolve.nodes import rule_problem
 from physai_lint.resolve.model import LaunchResult, NodeInstance
 
 
@@ -251,6 +252,20 @@ def invalid_remap(ctx: CheckContext) -> Iterator[Diagnostic]:
     seen: set[object] = set()
     for _, node in all_nodes(ctx):
         for rule_ in node.remaps:
+            if rule_.src in ("__ns", "__node", "__name") and rule_.dst is not None:
+                reason = rule_problem(rule_.src, rule_.dst)
+                if reason and (rule_.span, "to") not in seen:
+                    seen.add((rule_.span, "to"))
+                    what = "namespace" if rule_.src == "__ns" else "node name"
+                    yield Diagnostic(
+                        "N105", rule_.span,
+                        f'remap rule "{rule_.src}:={rule_.dst}" is invalid: {reason}; rcl cannot '
+                        "parse it, so the node fails to start",
+                        help=f"give a valid {what}"
+                             + (' starting with "/"' if rule_.src == "__ns" else "")
+                             + " (or use namespace= / name=, which launch makes valid)",
+                        key=f"to:{rule_.dst}")
+                continue
             for side, value in (("from", rule_.src), ("to", rule_.dst)):
                 if value is None or value.startswith("__") or (rule_.span, side) in seen:
                     continue

@@ -26,8 +26,72 @@ if TYPE_CHECKING:
     from physai_lint.resolve.instantiate import Instantiator
 
 NS, REMAPS, PARAMS = "ros_namespace", "ros_remaps", "global_params"
-_NODE_OVERRIDE = re.compile(r"^__node:=(.+)$")
-_NS_OVERRIDE = re.compile(r"^__ns:=(.+)$")
+# rcl flags of a --ros-args section that take the next argument (rcl arguments.c)
+_VALUE_FLAGS = frozenset({"-p", "--param", "--params-file", "--log-level", "--log-config-file",
+                          "--log-file-name", "-e", "--enclave"})
+_REMAP_FLAGS = frozenset({"-r", "--remap"})
+
+
+def command_line_rules(arguments: Any, ros_arguments: Any
+                       ) -> list[tuple[str | None, Span | None, bool]]:
+    """The remap rules a node's command line gives it, in rcl order (``rcl_parse_arguments``):
+    ``-r``/``--remap RULE`` in a ``--ros-args`` section, and a bare ``from:=to`` outside one (the
+    deprecated form rcl still reads). ``arguments`` and ``ros_arguments`` are (text or None,
+    value) pairs; launch_ros puts ``--ros-args`` before ``ros_arguments``. Each rule comes with its
+    span and whether it is in a ``--ros-args`` section (where rcl refuses a rule it cannot parse;
+    outside, such a text is not a rule). A rule whose text is unknown is None: it may match
+    anything."""
+    out: list[tuple[str | None, Span | None, bool]] = []
+    for section, start_in_ros in ((arguments, False), (ros_arguments, True)):
+        in_ros, pending = start_in_ros, None
+        for text, value in section:
+            span = v.span_of(value)
+            if pending is not None:
+                if pending in _REMAP_FLAGS or pending == "?":
+                    if text is None or ":=" in text:
+                        out.append((text, span, True))
+                pending = None
+                continue
+            if text is None:
+                if in_ros:
+                    pending = "?"  # an unknown flag: perhaps -r, so the next may be a rule
+                continue
+            if not in_ros:
+                if text == "--ros-args":
+                    in_ros = True
+                elif ":=" in text:
+                    out.append((text, span, False))
+                continue
+            if text == "--":
+                in_ros = False
+            elif text in _REMAP_FLAGS or text in _VALUE_FLAGS:
+                pending = text
+    return out
+
+
+def rule_problem(src: str, dst: str) -> str | None:
+    """Why rcl cannot parse the rule ``src:=dst`` (``_rcl_parse_remap_rule``), or None."""
+    if src in ("__node", "__name"):
+        return names.validate_node_name(dst) and f'"{dst}" is not a valid node name'
+    if src == "__ns":
+        if not dst.startswith("/"):
+            return f'"{dst}" is not a fully qualified namespace (it must start with "/")'
+        return names.validate_namespace(dst)
+    for side in (src, dst):
+        problem = (names.validate_full_topic_name(side) if side.startswith("/")
+                   else names.validate_topic_name(side))
+        if problem:
+            return f'"{side}": {problem}'
+    return None
+
+
+def split_rule(text: str) -> tuple[str | None, str, str]:
+    """(node prefix, match, replacement) of ``[node:]match:=replacement``."""
+    src, _, dst = text.partition(":=")
+    prefix = None
+    if ":" in src and not src.startswith("/") and "://" not in src:
+        prefix, _, src = src.partition(":")
+    return prefix, src, dst
 
 
 class NodeBuilder:
@@ -175,6 +239,19 @@ class NodeBuilder:
             out.append(EffRemap(src, dst, r.span, "node", prefix))
         return out
 
+    @staticmethod
+    def _command_line_remaps(arguments: Any, ros_arguments: Any, where: Span) -> list[EffRemap]:
+        out = []
+        for text, span, in_ros in command_line_rules(arguments, ros_arguments):
+            if text is None:
+                out.append(EffRemap(None, None, span or where, "node"))
+                continue
+            prefix, src, dst = split_rule(text)
+            if not in_ros and rule_problem(src, dst) is not None:
+                continue  # not a rule to rcl: an argument of the program
+            out.append(EffRemap(src, dst, span or where, "node", prefix))
+        return out
+
     def _register(self, inst_: NodeInstance, key: str | None, after: str | None = None) -> None:
         """Add a node with the timer and event handler it starts under; ``key``: the action an
         event handler's target_action names it by (None for a composable node: a handler naming
@@ -205,14 +282,16 @@ class NodeBuilder:
         ns_raw, ns_given = self._eval(a.namespace, scope)
         args = tuple(self.inst.ev.eval(x, scope) for x in (a.arguments or ()))
         ros_args = tuple(self.inst.ev.eval(x, scope) for x in (a.ros_arguments or ()))
-        # `-r __node:=x` / `__ns:=y` given by the user come first on the command line and win.
-        for text in (*args, *ros_args):
-            if text is None:
-                continue
-            if m := _NODE_OVERRIDE.match(text):
-                name, name_given = m.group(1), True
-            elif m := _NS_OVERRIDE.match(text):
-                ns_raw, ns_given = m.group(1), True
+        # The user's rules come first on the command line: rcl applies the first that matches, so
+        # they win over launch's -r __node:=/__ns: (name=, namespace=), SetRemap and remappings=.
+        cl_remaps = self._command_line_remaps(
+            zip(args, a.arguments or ()), zip(ros_args, a.ros_arguments or ()), a.span)
+        renamed = next((r for r in cl_remaps if r.src in ("__node", "__name") and r.node_prefix is None), None)
+        if renamed is not None and renamed.dst is not None:
+            name, name_given = renamed.dst, True
+        moved = next((r for r in cl_remaps if r.src == "__ns" and r.node_prefix is None), None)
+        if moved is not None and moved.dst is not None:
+            ns_raw, ns_given = moved.dst, True
         own_remaps = self._remaps(a.remappings, scope)
         keyed = name_given  # launch_ros keys a parameter dict by name= alone (node.py)
         if not name_given:
@@ -227,7 +306,7 @@ class NodeBuilder:
         remaps, gparams = self._global_sources(scope, node_id, a.span, a.parameters)
         key = fqn if (keyed and ns_specified and fqn) else "/**"
         params = gparams + self._own_params(a.parameters, scope, key)
-        remaps += own_remaps
+        remaps = cl_remaps + remaps + own_remaps
         inst_ = NodeInstance(
             id=node_id, kind=a.kind, package=package, executable=executable, name=name,
             namespace=namespace, fqn=fqn, active=fr.active, remaps=remaps, param_sources=params,

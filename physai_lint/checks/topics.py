@@ -11,7 +11,7 @@ from physai_lint.checks.base import CheckContext, rule
 from physai_lint.graph.system import Endpoint, SystemGraph, build_graph, remap_target, similar
 from physai_lint.interfaces.model import LIFECYCLE_ENDPOINTS
 from physai_lint.model.findings import Diagnostic, Related
-from physai_lint.model.values import literal_of
+from physai_lint.model.values import literal_of, span_of
 from physai_lint.resolve.model import EffRemap, NodeInstance
 from physai_lint.resolve.names import validate_full_topic_name
 
@@ -62,6 +62,10 @@ def _written_remap(node: NodeInstance, r: EffRemap) -> tuple[Any, Any] | None:
     for w in getattr(node.action, "remappings", ()):
         if w.span == r.span:
             return w.src, w.dst
+    for field in ("arguments", "ros_arguments"):  # a -r rule on the command line: one value
+        for value in getattr(node.action, field, None) or ():
+            if span_of(value) == r.span:
+                return value, value
     return None
 
 
@@ -77,9 +81,72 @@ def _namespace_fixed(node: NodeInstance) -> bool:
     return written is None or _fixed(written)
 
 
+def _shadowing(node: NodeInstance, index: int) -> tuple[EffRemap, str] | None:
+    """(earlier rule, the name both match) when an earlier rule of the node matches the same name
+    as rule ``index`` and maps it elsewhere: rcl applies the first rule that matches
+    (``rcl_remap_first_match``), so rule ``index`` never applies to this node. None when it may."""
+    r = node.remaps[index]
+    if r.src is None or r.src.startswith("__") or not _applies(r, node):
+        return None
+    src, dst = remap_target(r, node)
+    if src is None:
+        return None
+    for earlier in node.remaps[:index]:
+        if earlier.src is None:
+            return None  # an unknown rule may match first: nothing known
+        if earlier.src.startswith("__") or not _applies(earlier, node):
+            continue
+        e_src, e_dst = remap_target(earlier, node)
+        if e_src is None:
+            return None
+        if e_src == src:
+            return (earlier, src) if e_dst != dst else None
+    return None
+
+
+def _applies(r: EffRemap, node: NodeInstance) -> bool:
+    return r.node_prefix is None or (node.name is not None and r.node_prefix == node.name)
+
+
+def _rule_words(r: EffRemap) -> str:
+    if r.origin == "global":
+        return {".xml": "<set_remap>", ".yaml": "set_remap"}.get(
+            r.span.file[r.span.file.rfind("."):], "the SetRemap")
+    return "the rule"
+
+
+def _shadowed_rules(ctx: CheckContext) -> Iterator[Diagnostic]:
+    verdict: dict[object, tuple[NodeInstance, EffRemap, EffRemap, str] | None] = {}
+    for _, node in all_nodes(ctx):
+        if node.active is False or node.kind == "process":
+            continue
+        for i, r in enumerate(node.remaps):
+            if r.origin != "node" or verdict.get(r.span, 0) is None:
+                continue
+            hit = _shadowing(node, i)
+            verdict[r.span] = (node, r, *hit) if hit is not None else None
+    for found in verdict.values():
+        if found is None:
+            continue
+        node, r, earlier, name = found
+        yield Diagnostic(
+            "T102", r.span,
+            f'remap "{r.src}" -> "{r.dst}" never applies to {node.fqn or node.executable}: '
+            f'{_rule_words(earlier)} "{earlier.src}" -> "{earlier.dst}" (line {earlier.span.line}) '
+            f'matches "{name}" first, and rcl applies only the first rule that matches',
+            help=("remove one of the two rules, or give the SetRemap a narrower scope (a GroupAction "
+                  "around the nodes it is meant for)" if earlier.origin == "global" else
+                  "remove one of the two rules: only the first one that matches counts"),
+            related=(Related(earlier.span, "the rule that applies"),),
+            key=f"{node.fqn}:{r.src}")
+
+
 @rule("T102", "unused-remap")
 def unused_remap(ctx: CheckContext) -> Iterator[Diagnostic]:
     seen: set[object] = set()
+    for d in _shadowed_rules(ctx):
+        seen.add(d.span)
+        yield d
     # One remapping list written once and handed to several nodes (nav2's ('/tf', 'tf') list on
     # every server) is meant for whichever of them uses each rule: a rule is unused only when no
     # node it reaches uses it, or may use it (its interface unknown or not complete).

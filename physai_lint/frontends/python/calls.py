@@ -101,6 +101,21 @@ def env_read(ev: Evaluator, name: Any, span: Span) -> Any:
     return Opaque(f"depends on the environment variable{shown}", span)
 
 
+def contains(ev: Evaluator, obj: Any, key: Any, span: Span) -> Any:
+    """``name in context.launch_configurations``: a read of the name (L102), true where the
+    resolver found it set (``specialize``), else known only at launch time. None: not this test."""
+    if not isinstance(obj, LaunchConfigsSym):
+        return None
+    if not isinstance(key, str):
+        ev.escaped.add(EVERY_CONFIGURATION)
+        return Opaque("a test of a launch configuration named at launch time", span)
+    unset = (Unknown("None: the launch configuration is not set", span),)
+    found = _peeked(ev, (LaunchConfig((Text(key, span),), unset, span),))
+    if isinstance(found, str):
+        return True
+    return Opaque(f'whether launch configuration "{key}" is set is known only at launch time', span)
+
+
 def subscript(ev: Evaluator, obj: Any, key: Any, span: Span) -> Any:
     if isinstance(obj, Ref) and obj.qual == "os.environ":
         return env_read(ev, key, span)

@@ -253,7 +253,9 @@ class ActionBuilder:
             read = _distinct(performed + tuple(v for v in o.extra.get("peeked", ()) if v))
             if isinstance(result, Opaque):
                 return L.OpaqueAction(i, s, cond, result.reason, (), read)
-            return L.OpaqueAction(i, s, cond, "", self.actions(result, s), performed,
+            # ``read`` as what it reads: a looked-up value compared or tested (``.get(name, d) ==
+            # 'true'``) reaches no action, and is still a read (L102)
+            return L.OpaqueAction(i, s, cond, "", self.actions(result, s), read,
                                   read if o.extra.get("undecided") else ())
         if n == "ResetLaunchConfigurations":
             lcs = o.arg(0, "launch_configurations")

@@ -162,8 +162,13 @@ class Instantiator:
 
         for d in required_missing(lf.actions, scope.configs):
             scope.configs.setdefault(d.name, None)
-        scope.locals = {"current_launch_file_directory": posixpath.dirname(entry),
-                        "current_launch_file_path": entry, "_owner": entry}
+        # ``ros2 launch <package> <file>`` runs the installed copy: ThisLaunchFileDir() / $(dirname)
+        # is its folder in the install space, where only what the package installs is beside it
+        shown = (self.packages.installed_copy(entry) if self.packages is not None else None) or entry
+        if shown != entry:
+            self.frame = replace(self.frame, dir=posixpath.dirname(shown))
+        scope.locals = {"current_launch_file_directory": posixpath.dirname(shown),
+                        "current_launch_file_path": shown, "_owner": entry}
         self.lookups(lf, scope)
         self._walk(lf.actions, scope)
         self._run_deferred(scope)

@@ -338,6 +338,32 @@ class PackageIndex:
         if pkg is not None:  # unreadable: read (and reported) again when asked, as here
             self.packages._read[name] = pkg
 
+    def installed_copy(self, path: str) -> str | None:
+        """Where the install space holds the workspace source file ``path`` (the copy ``ros2
+        launch <package> <file>`` runs), or None when its package does not install it or it is
+        not in a workspace package. The install rules are read backwards; each candidate is
+        checked forwards (``locate``)."""
+        path = _norm(path)
+        pkg = self.package_of_source(path)
+        if pkg is None:
+            return None
+        rel = path[len(pkg.path) + 1 :]
+        prefix = f"{self.install_root}/{pkg.name}/"
+        candidates = [f"share/{pkg.name}/{rel}"]  # install(DIRECTORY launch DESTINATION share/<pkg>)
+        for rule in pkg.install_rules:
+            if rule.source is None:
+                continue
+            if rule.kind == "file" and rule.source == path:
+                candidates.append(posixpath.join(rule.dest, rule.rename or posixpath.basename(path)))
+            elif rule.kind == "directory" and path.startswith(rule.source + "/"):
+                base = rule.dest if rule.contents_only else posixpath.join(rule.dest, posixpath.basename(rule.source))
+                candidates.append(posixpath.join(base, path[len(rule.source) + 1 :]))
+        for cand in candidates:
+            found = self.locate(prefix + cand)
+            if found.status == "ok" and found.source == path:
+                return prefix + cand
+        return None
+
     def locate(self, path: str) -> Located:
         """Where a path launch would open comes from (see module docstring). Memoised: every node
         of a large workspace asks for its parameter files, and the answer is a walk over install

@@ -108,6 +108,7 @@ def concatenation(ctx: CheckContext) -> Iterator[Diagnostic]:
     how_text = {
         "plus": "joined with + at description time",
         "os.path.join": "passed to os.path.join at description time",
+        "path": "joined to a pathlib.Path with / at description time",
         "f-string": "put into an f-string at description time",
         "format": "formatted with str.format at description time",
         "percent": "formatted with % at description time",

@@ -356,7 +356,7 @@ class ConcatFact:
     """A substitution joined at description time: ``'a' + LaunchConfiguration('x')``,
     ``os.path.join(FindPackageShare('p'), 'x')``, f-string of a substitution (``how``)."""
 
-    how: Literal["plus", "os.path.join", "f-string", "format", "percent", "str", "join",
+    how: Literal["plus", "os.path.join", "path", "f-string", "format", "percent", "str", "join",
                  "truth", "equals", "not-equals", "call", "condition"]
     span: Span
     detail: str

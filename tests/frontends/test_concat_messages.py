@@ -1,6 +1,7 @@
 """L004 substitution-concatenation says once what was done to which substitution."""
 LAUNCH = """
 import os
+from pathlib import Path
 from launch import LaunchDescription
 from launch.substitutions import LaunchConfiguration
 from launch_ros.actions import Node
@@ -15,7 +16,8 @@ def generate_launch_description():
     d = "-".join(["a", dof])
     e = str(dof)
     f = "{}.yaml".format(dof)
-    return LaunchDescription([Node(package="demo_nodes_cpp", executable="talker", arguments=[a, b, c, d, e, f])])
+    g = Path("/opt/robot") / dof  # PurePath.__truediv__: TypeError
+    return LaunchDescription([Node(package="demo_nodes_cpp", executable="talker", arguments=[a, b, c, d, e, f, g])])
 """
 
 
@@ -28,6 +30,7 @@ def test_each_message_names_the_substitution_and_what_was_done_once(demo_finding
         'substitution LaunchConfiguration("dof") is joined into a str with str.join at description time',
         'substitution LaunchConfiguration("dof") is converted with str() at description time',
         'substitution LaunchConfiguration("dof") is formatted with str.format at description time',
+        'substitution LaunchConfiguration("dof") is joined to a pathlib.Path with / at description time',
     ]
 
 

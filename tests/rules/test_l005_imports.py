@@ -51,3 +51,27 @@ def test_jazzy_has_them_but_not_the_misplaced_class(tmp_path: Path, demo_package
 
 def test_rolling_is_not_checked(tmp_path: Path, demo_package: Any) -> None:
     assert _l005(tmp_path, demo_package, "rolling") == []
+
+
+STAR = """from launch import LaunchDescription
+from launch.actions import *
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('robot', default_value='r1'),
+        Node(package='demo_nodes_cpp', executable='talker'),
+    ])
+"""
+
+
+def test_a_star_import_of_a_launch_module_binds_only_what_it_exports(demo_findings):
+    # launch.actions has DeclareLaunchArgument, not Node (launch_ros.actions): NameError
+    found = demo_findings({"launch/a.launch.py": STAR}, "launch/a.launch.py", "L005")
+    assert [(line, msg.split(";")[0]) for line, msg in found] == [
+        (8, 'name "Node" is used but never imported or defined')]
+
+
+def test_a_star_import_of_another_module_may_bind_anything(demo_findings):
+    text = STAR.replace("from launch.actions import *", "from launch.actions import *\nfrom my_helpers import *")
+    assert demo_findings({"launch/a.launch.py": text}, "launch/a.launch.py", "L005") == []

@@ -214,11 +214,26 @@ def _candidates(text: str, path: str) -> set[str]:
     return out
 
 
+def _star_names(n: ast.ImportFrom) -> frozenset[str] | None:
+    """What ``from <module> import *`` may bind: for a public launch / launch_ros module, at most
+    the names it binds in some distro (``launch-exports.json``); None for any other module."""
+    if n.level or not n.module or n.module.split(".")[0] not in _LAUNCH_PACKAGES:
+        return None
+    from physai_lint.workspace.distro import launch_exports
+
+    tables = [t[n.module] for t in launch_exports().values() if n.module in t]
+    return frozenset().union(*tables) if tables else None
+
+
 def undefined_names(tree: ast.Module, nodes: list[ast.AST], spans: SpanMaker, text: str) -> list[NameFact]:
+    star_bound: set[str] = set()
     for n in nodes:
         if isinstance(n, ast.ImportFrom) and any(a.name == "*" for a in n.names):
-            return []
-    module_bound = _bound_in(tree.body)
+            names = _star_names(n)
+            if names is None:
+                return []  # any name may come from it
+            star_bound |= names
+    module_bound = _bound_in(tree.body) | star_bound
     for n in nodes:
         if isinstance(n, ast.Global):
             module_bound.update(n.names)

@@ -184,6 +184,9 @@ def binop(rec: Recorder, op: ast.operator, left: Any, right: Any, span: Span) ->
             return SymStr(to_value(left, span) + to_value(right, span))
         return None
     if isinstance(op, ast.Div) and isinstance(left, KPath):
+        if is_subst(right):  # PurePath.__truediv__ takes str or os.PathLike: TypeError
+            rec.concat("path", span, shown_subst(right))
+            return Opaque("a substitution joined to a pathlib.Path", span)
         return path_join([left, right], span)  # a KPath again: the next / joins on
     if isinstance(op, ast.Mod) and isinstance(left, str):
         args = right if isinstance(right, tuple) else (right,)

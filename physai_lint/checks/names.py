@@ -64,12 +64,15 @@ def duplicate_node_name(ctx: CheckContext) -> Iterator[Diagnostic]:
             if p.span == node.span:  # one action run again: a loop, or a function called twice
                 yield _repeated(launch, node, sites)
                 continue
+            first_at = p.spans.get("name", p.span)
+            where = f"line {first_at.line}" if first_at.file == span.file else \
+                f"{relpath(first_at.file)}:{first_at.line}"
             yield Diagnostic(
                 "N101", span,
-                f'node "{node.fqn}" is launched twice (also at line {p.span.line}); '
+                f'node "{node.fqn}" is launched twice (also at {where}); '
                 f"services, parameters and topics of the two collide{name_note((node, p))}",
                 help="give each node its own name or namespace (PushRosNamespace / namespace=)",
-                related=(Related(p.spans.get("name", p.span), "first launched here"),),
+                related=(Related(first_at, "first launched here"),),
                 key=node.fqn)
 
 
@@ -91,13 +94,15 @@ def _component_twice(node: NodeInstance, p: NodeInstance, span: Any) -> Diagnost
     if node.kind == "composable_node" and node.namespace == "/" and node.container and cont_ns != "/":
         hint = (" (a component does not take its container's namespace: give it "
                 "namespace= or push one around the container)")
+    first_at = p.spans.get("name", p.span)
+    where = f"line {first_at.line}" if first_at.file == span.file else f"{relpath(first_at.file)}:{first_at.line}"
     return Diagnostic(
         "N101", span,
-        f'node "{node.fqn}" is {_where(node)} here and {_where(p)} at line {p.span.line}; '
+        f'node "{node.fqn}" is {_where(node)} here and {_where(p)} at {where}; '
         f"services, parameters and topics of the two collide{hint}{name_note((node, p))}",
         help="give each node its own name or namespace (namespace= on the composable node, or "
              "PushRosNamespace around it)",
-        related=(Related(p.spans.get("name", p.span), "first started here"),),
+        related=(Related(first_at, "first started here"),),
         key=node.fqn)
 
 

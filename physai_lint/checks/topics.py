@@ -337,6 +337,8 @@ def _dangling(ctx: CheckContext, mine: str, other: str, code: str) -> Iterator[D
         for topic, nodes in by_topic.items():
             if len(nodes) == 1:
                 own.setdefault(next(iter(nodes)), set()).add(topic)
+        namespaces = {n.namespace for n in g.launch.nodes if n.namespace}
+        connected = {e.resolved for e in g.of_kind(mine) if e.resolved}  # both ends known
         for e in g.of_kind(mine):  # type: ignore[arg-type]
             if e.resolved is None or e.resolved in others or e.resolved.split("/")[-1].startswith("_"):
                 continue
@@ -361,7 +363,8 @@ def _dangling(ctx: CheckContext, mine: str, other: str, code: str) -> Iterator[D
             # a near miss carries the same messages: /joint_states is no misspelt /tf_static
             candidates = {t for t in others - own.get(e.node, set()) - served
                           if e.type is None or None in types[t] or e.type in types[t]}
-            close = similar(e.resolved, candidates, 0.8 if mine == "publisher" else 0.6)
+            close = [c for c in similar(e.resolved, candidates, 0.8 if mine == "publisher" else 0.6)
+                     if not (c in connected and _sibling_copy(e.resolved, c, namespaces))]
             if near_miss_only and not close:
                 continue  # an output nobody reads is normal (sensors, diagnostics); a near miss is not
             hint = (" (did you mean " + " or ".join(f'"{c}"' for c in close) + "?)") if close else ""
@@ -371,6 +374,20 @@ def _dangling(ctx: CheckContext, mine: str, other: str, code: str) -> Iterator[D
                 code, span, f'{node.fqn or node.executable} {verb} "{e.resolved}" but {missing}{hint}',
                 help="remap one end so both use the same name, or launch the missing node",
                 key=f"{node.fqn}:{e.resolved}")
+
+
+def _sibling_copy(name: str, candidate: str, namespaces: set[str]) -> bool:
+    """``candidate`` is ``name`` in another node namespace at the same depth (``/robot2/cmd_vel``
+    for ``/robot1/cmd_vel``): once connected there, the other robot's copy of the topic, no near
+    miss of this one (an unconnected one is: a camera's info beside its rectifier's)."""
+    a, c = name.split("/"), candidate.split("/")
+    if len(a) != len(c):
+        return False
+    diff = [i for i, (x, y) in enumerate(zip(a, c)) if x != y]
+    if len(diff) != 1 or diff[0] == len(a) - 1:
+        return False
+    i = diff[0] + 1
+    return "/".join(a[:i]) in namespaces and "/".join(c[:i]) in namespaces
 
 
 def _exists(ctx: CheckContext, g: SystemGraph, e: Endpoint) -> bool | None:

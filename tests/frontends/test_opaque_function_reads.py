@@ -37,3 +37,32 @@ def test_a_membership_test_is_decided_where_the_configuration_is_set(demo_graph)
     nodes = demo_graph({"launch/a.launch.py": LAUNCH}, "launch/a.launch.py")
     assert nodes["listener"]["active"] is True
     assert nodes["maybe"]["active"] == "unknown"  # not known to be unset: not known to start
+
+
+SETS = """import os
+from launch import LaunchDescription
+from launch.actions import OpaqueFunction
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def setup(context):
+    context.launch_configurations['calib_file'] = os.path.join('/opt', 'calib.yaml')
+    return [Node(package='demo_nodes_cpp', executable='talker', name='talker',
+                 arguments=[LaunchConfiguration('calib_file')])]
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        OpaqueFunction(function=setup),
+        Node(package='demo_nodes_cpp', executable='listener', name='listener',
+             arguments=[LaunchConfiguration('calib_file')]),
+    ])
+"""
+
+
+def test_a_configuration_stored_into_the_context_is_set(demo_findings, demo_graph):
+    # launch's context hands out the live mapping: a store is a SetLaunchConfiguration
+    assert demo_findings({"launch/a.launch.py": SETS}, "launch/a.launch.py", "L101") == []
+    nodes = demo_graph({"launch/a.launch.py": SETS}, "launch/a.launch.py")
+    assert nodes["listener"]["arguments"] == ["/opt/calib.yaml"]

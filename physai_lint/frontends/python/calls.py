@@ -574,7 +574,7 @@ def make_lobj(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any],
         if isinstance(fn, Partial):
             fn, bound = fn.func, (fn.args, fn.kwargs)
         if isinstance(fn, UserFunc) and isinstance(fargs, (list, tuple)) and isinstance(fkwargs, dict):
-            start, peeks, undecided = len(ev.performed), len(ev.peeked), ev.undecided
+            start, peeks, undecided, sets = len(ev.performed), len(ev.peeked), ev.undecided, len(ev.config_sets)
             ev.guarded += 1  # the body runs when launch executes the action, if it does
             try:
                 obj.extra["result"] = call_user(ev, fn, [*bound[0], ContextSym(), *fargs],
@@ -584,6 +584,7 @@ def make_lobj(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any],
             obj.extra["performed"] = tuple(ev.performed[start:])
             obj.extra["peeked"] = tuple(ev.peeked[peeks:])
             obj.extra["undecided"] = ev.undecided > undecided
+            obj.extra["sets"] = tuple(ev.config_sets[sets:])
         else:
             obj.extra["result"] = Opaque("OpaqueFunction with a function that cannot be evaluated statically", span)
     elif short in _HANDLER_KEYS:

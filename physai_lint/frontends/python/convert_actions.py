@@ -5,7 +5,7 @@ from typing import TYPE_CHECKING, Any
 
 from physai_lint.model import launch as L
 from physai_lint.model.span import Span
-from physai_lint.model.values import BoolOp, Unknown, Value, literal_of
+from physai_lint.model.values import BoolOp, Text, Unknown, Value, literal_of
 
 from . import api
 from .convert_values import opt_value, span_at, to_condition, to_params, to_pvalue, to_value
@@ -255,7 +255,7 @@ class ActionBuilder:
                 return L.OpaqueAction(i, s, cond, result.reason, (), read)
             # ``read`` as what it reads: a looked-up value compared or tested (``.get(name, d) ==
             # 'true'``) reaches no action, and is still a read (L102)
-            return L.OpaqueAction(i, s, cond, "", self.actions(result, s), read,
+            return L.OpaqueAction(i, s, cond, "", self._config_sets(o, i) + self.actions(result, s), read,
                                   read if o.extra.get("undecided") else ())
         if n == "ResetLaunchConfigurations":
             lcs = o.arg(0, "launch_configurations")
@@ -296,6 +296,20 @@ class ActionBuilder:
                     if _not_text(v):
                         self.ev.wrong_type("text", f"GroupAction(launch_configurations={{{key!r}: ...}})", v,
                                            o.arg_span(-1, "launch_configurations"))
+
+    @staticmethod
+    def _config_sets(o: LObj, i: str) -> tuple[L.Action, ...]:
+        """``context.launch_configurations[name] = value`` in the function: sets made when it runs,
+        before the actions it returns (launch's context hands out the live mapping)."""
+        out: list[L.Action] = []
+        for k, (name, value, span) in enumerate(o.extra.get("sets", ())):
+            if not name:
+                out.append(L.OpaqueAction(f"{i}.set{k}", span, None,
+                                          "a launch configuration named only at launch time is set"))
+            else:
+                out.append(L.SetLaunchConfiguration(f"{i}.set{k}", span, None, (Text(name, span),),
+                                                    to_value(value, span)))
+        return tuple(out)
 
     def _v(self, o: LObj, pos: int, name: str) -> Value:
         return opt_value(o, pos, name) or ()

@@ -35,7 +35,18 @@ from .core import (
 )
 from .expressions import ExpressionsMixin
 from .positions import SpanMaker
-from .runtime import Alternatives, Branched, CondTag, LObj, ModuleValue, Opaque, Ref, SymBool, UserFunc
+from .runtime import (
+    Alternatives,
+    Branched,
+    CondTag,
+    LaunchConfigsSym,
+    LObj,
+    ModuleValue,
+    Opaque,
+    Ref,
+    SymBool,
+    UserFunc,
+)
 
 __all__ = ["BUILTIN_NAMES", "MAX_DEPTH", "Abort", "Evaluator", "ModuleCtx", "Scope", "is_concrete", "truth"]
 
@@ -144,6 +155,11 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
                     obj[key] = value
                 except Exception:  # noqa: BLE001, S110 - a failing store leaves the container as it was
                     pass
+            elif isinstance(obj, LaunchConfigsSym):
+                if isinstance(key, str):
+                    self.config_sets.append((key, value, self.span(t, scope)))
+                else:  # a name known only at launch time: it may set any configuration
+                    self.config_sets.append(("", value, self.span(t, scope)))
             else:  # stored into an object the evaluator does not follow: it may read it later
                 self.escape([value])
         elif isinstance(t, ast.Starred):

@@ -31,6 +31,9 @@ class Recorder:
         self.performed: list[Value] = []
         # ``context.launch_configurations.get(name)`` / ``[name]`` read the same way (``_peeked``).
         self.peeked: list[Value] = []
+        # ``context.launch_configurations[name] = value`` in an OpaqueFunction: the live mapping,
+        # so a set as ``SetLaunchConfiguration`` makes, before the actions the function returns.
+        self.config_sets: list[tuple[str, Any, Span]] = []
         # ``if``s and conditional expressions decided neither way by a value that is not a launch
         # condition (``make = "Hesai" if model[:6] == "pandar" else ...``): an OpaqueFunction body
         # that counted some lost values its performed substitutions may decide (``convert_actions``).

@@ -48,7 +48,8 @@ def not_launched(ctx: CheckContext) -> Iterator[Diagnostic]:
     seen: set[object] = set()
     for launch in ctx.launches:
         nodes = [n for n in launch.nodes if n.active is not False and n.kind != "process"]
-        if any(n.fqn is None and _may_be_lifecycle(ctx, n) for n in nodes) or launch.opaque:
+        if any(n.fqn is None and _may_be_lifecycle(ctx, n) for n in nodes) or launch.opaque \
+                or any(_starts_ros_nodes(p) for p in launch.nodes if p.kind == "process" and p.active is not False):
             continue  # an unknown node might be the one it manages
         fqns = {n.fqn for n in nodes}
         mgrs = list(managers(ctx, launch))
@@ -115,6 +116,17 @@ NEVER_LIFECYCLE = frozenset({
     ("twist_mux", "twist_mux"), ("rqt_gui", "rqt_gui"), ("rqt_robot_steering", "rqt_robot_steering"),
     ("topic_tools", "relay"), ("image_transport", "republish"),
 })
+
+
+def _starts_ros_nodes(proc: NodeInstance) -> bool:
+    """A process that starts ROS nodes launch does not name: ``ros2 run <package> <executable>``
+    or ``ros2 launch ...`` (``ExecuteProcess(cmd=['ros2', 'run', 'nav2_amcl', 'amcl'])``)."""
+    words = command_words(proc)
+    if not words:
+        return False
+    # (the program may be unknown: FindExecutable(name='ros2') is found only at launch time)
+    return (words[0] is None or words[0].rsplit("/", 1)[-1] == "ros2") and len(words) > 1 \
+        and words[1] in ("run", "launch")
 
 
 def _may_be_lifecycle(ctx: CheckContext, node: NodeInstance) -> bool:

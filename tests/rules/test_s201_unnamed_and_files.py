@@ -46,3 +46,27 @@ def test_plain_unnamed_nodes_leave_s201_on_and_items_are_located(demo_findings: 
 
 def test_an_unnamed_lifecycle_node_may_be_the_missing_one(demo_findings: Any) -> None:
     assert _s201(demo_findings, "LifecycleNode") == []
+
+
+ROS2_RUN = """from launch import LaunchDescription
+from launch.actions import ExecuteProcess
+from launch.substitutions import FindExecutable
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        ExecuteProcess(cmd=[{program}, 'run', 'nav2_amcl', 'amcl'], prefix='taskset -c 3'),
+        Node(package='nav2_lifecycle_manager', executable='lifecycle_manager', name='lifecycle_manager',
+             parameters=[{{'autostart': True, 'node_names': ['amcl']}}]),
+    ])
+"""
+
+
+def test_a_ros2_run_process_may_start_the_managed_node(demo_findings: Any) -> None:
+    # ros2 run starts amcl under the name its code gives it: not one launch names
+    for program in ("'ros2'", "FindExecutable(name='ros2')"):
+        text = ROS2_RUN.format(program=program)
+        assert demo_findings({"launch/a.launch.py": text}, "launch/a.launch.py", "S201") == []
+    text = ROS2_RUN.format(program="'taskset'")
+    assert [line for line, _ in demo_findings({"launch/a.launch.py": text}, "launch/a.launch.py", "S201")] == [11]

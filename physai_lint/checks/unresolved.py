@@ -1,9 +1,9 @@
 """U101 unknown-package, U102 unknown-executable: references that ROS 2 cannot resolve."""
 from __future__ import annotations
 
-from typing import Iterator
+from typing import Any, Iterator
 
-from physai_lint.checks._util import all_nodes, did_you_mean
+from physai_lint.checks._util import all_nodes, did_you_mean, relpath
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.closematch import close_matches
 from physai_lint.model.findings import Diagnostic
@@ -64,6 +64,20 @@ def _package_help(ctx: CheckContext, name: str, executable: str | None) -> tuple
                    "check the package name, add the package to the workspace, or install it")
 
 
+def _skipped(ctx: CheckContext, name: str, span: Any) -> Diagnostic | None:
+    """U101 for a package of the workspace that colcon skips (an ignore marker in its directory)
+    and no underlay provides: whatever the package.xml declares, nothing installs it."""
+    found = getattr(ctx.packages, "ignored", {}).get(name)
+    if found is None or ctx.packages.origin(name) is not None:
+        return None
+    pkg_dir, marker = found
+    return Diagnostic(
+        "U101", span,
+        f'package "{name}" is in {relpath(pkg_dir)}, which holds {marker}: colcon skips it, so it is '
+        f"never built or installed, and it is not in the {ctx.distro} distro",
+        help=f"remove {relpath(pkg_dir)}/{marker} to build the package, or stop launching it", key=name)
+
+
 def _declared(ctx: CheckContext, name: str, file: str | None) -> bool:
     """Whether the package holding ``file`` declares a run dependency on ``name``: rosdep installs
     it from wherever its rules point (a vendor's apt source, a private rosdep key), which the
@@ -82,7 +96,14 @@ def unknown_package(ctx: CheckContext) -> Iterator[Diagnostic]:
         if node.package is None or ctx.packages.has_package(node.package):
             continue
         span = node.spans.get("package", node.span)
-        if (span, node.package) in reported or _declared(ctx, node.package, span.file or node.file):
+        if (span, node.package) in reported:
+            continue
+        skipped = _skipped(ctx, node.package, span)
+        if skipped is not None:
+            reported.add((span, node.package))
+            yield skipped
+            continue
+        if _declared(ctx, node.package, span.file or node.file):
             continue
         reported.add((span, node.package))
         if not node.package:
@@ -98,8 +119,14 @@ def unknown_package(ctx: CheckContext) -> Iterator[Diagnostic]:
             help=fix, key=node.package)
     for launch in ctx.launches:
         for name, span, _file, from_config in launch.package_refs:
-            if span is None or ctx.packages.has_package(name) or (span, name) in reported \
-                    or _declared(ctx, name, span.file or _file):
+            if span is None or ctx.packages.has_package(name) or (span, name) in reported:
+                continue
+            skipped = _skipped(ctx, name, span)
+            if skipped is not None:
+                reported.add((span, name))
+                yield skipped
+                continue
+            if _declared(ctx, name, span.file or _file):
                 continue
             reported.add((span, name))
             if not name and from_config:  # a required argument's placeholder default, not set

@@ -18,7 +18,7 @@ from physai_lint.bounded_read import read_at_most
 from ._glob import compile_glob
 from ._model import BuildInfo, InstallRule
 from .cmake import read_cmake_package, read_listfile
-from .discovery import UsageError, dir_identity, has_ignore_marker, skip_dir_name
+from .discovery import IGNORE_MARKERS, UsageError, dir_identity, has_ignore_marker, skip_dir_name
 from .distro import DISTROS, released_packages
 from .package_xml import _NAME_RX, ManifestInfo, parse_manifest
 from .setup_py import read_setup_py
@@ -124,6 +124,9 @@ class PackageIndex:
         self.prefixes = prefixes
         self.packages = _Packages(self)
         self.installed: dict[str, str] = {}  # name -> prefix
+        # packages of the workspace colcon skips (an ignore marker in their directory): name ->
+        # (directory, marker); not packages of the index
+        self.ignored: dict[str, tuple[str, str]] = {}
         # package.xml files colcon would reject (path, message, line): the engine reports these
         self.problems: list[tuple[str, str, int]] = []
         # what the static readers could not follow in setup.py / CMakeLists.txt (path, message,
@@ -564,9 +567,11 @@ def _list_executables(libdir: str) -> frozenset[str] | None:
 # ---- building ---------------------------------------------------------------------------------
 
 
-def _find_packages(root: str) -> list[str]:
+def _find_packages(root: str, ignored: list[tuple[str, str]] | None = None) -> list[str]:
     """Directories below ``root`` holding a package.xml, the way colcon crawls: ignore markers skip
-    a directory and everything below; a package's subdirectories hold no further packages."""
+    a directory and everything below; a package's subdirectories hold no further packages.
+    ``ignored`` collects (directory, marker) of the package directories a marker of their own
+    skips (a package disabled with COLCON_IGNORE)."""
     found: list[str] = []
     seen: set[tuple[int, int]] = set()
 
@@ -581,6 +586,8 @@ def _find_packages(root: str) -> list[str]:
             return
         names = {e.name for e in entries}
         if has_ignore_marker(d, names):
+            if ignored is not None and "package.xml" in names:
+                ignored.append((d, next(m for m in IGNORE_MARKERS if m in names)))
             return
         if "package.xml" in names:
             found.append(d)
@@ -657,7 +664,13 @@ def build_package_index(workspace_root: str, distro: str = "humble",
             if not n.startswith("."):
                 index.installed.setdefault(n, prefix)
 
-    pkg_dirs = _find_packages(root) if os.path.isdir(root) else []
+    ignored: list[tuple[str, str]] = []
+    pkg_dirs = _find_packages(root, ignored) if os.path.isdir(root) else []
+    for pkg_dir, marker in ignored:
+        text = index.read_text(pkg_dir + "/package.xml")
+        name = _plain_name(text) if text is not None else None
+        if name:
+            index.ignored.setdefault(name, (pkg_dir, marker))
     if scope is not None:
         _scoped_problems(index, pkg_dirs, scope)
         return index

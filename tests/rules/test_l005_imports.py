@@ -75,3 +75,24 @@ def test_a_star_import_of_a_launch_module_binds_only_what_it_exports(demo_findin
 def test_a_star_import_of_another_module_may_bind_anything(demo_findings):
     text = STAR.replace("from launch.actions import *", "from launch.actions import *\nfrom my_helpers import *")
     assert demo_findings({"launch/a.launch.py": text}, "launch/a.launch.py", "L005") == []
+
+
+STAR_READ = """from launch import LaunchDescription
+from launch.actions import *
+from launch.substitutions import *
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('max_tension', default_value='10'),
+        Node(package='demo_nodes_cpp', executable='talker', arguments=[LaunchConfiguration('max_tension_n')]),
+    ])
+"""
+
+
+def test_classes_a_star_import_binds_are_evaluated(demo_findings):
+    # LaunchConfiguration comes from launch.substitutions' star import: the misspelt read is seen
+    files = {"launch/a.launch.py": STAR_READ}
+    assert [line for line, _ in demo_findings(files, "launch/a.launch.py", "L101")] == [10]
+    assert [line for line, _ in demo_findings(files, "launch/a.launch.py", "L102")] == [9]

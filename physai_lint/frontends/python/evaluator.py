@@ -230,6 +230,13 @@ class Evaluator(ExpressionsMixin, symbolic.Recorder):
             if alias.name == "*":
                 if isinstance(mod, ModuleValue):
                     scope.vars.update({k: v for k, v in mod.globals.items() if not k.startswith("_")})
+                elif isinstance(mod, Ref) and mod.qual:
+                    # a launch / launch_ros module: the names it binds (those of every distro)
+                    from .facts import star_names
+
+                    for name in sorted(star_names(s) or ()):
+                        if name[:1].isupper():  # classes; submodules stay unknown names
+                            scope.vars[name] = Ref(f"{mod.qual}.{name}")
                 continue
             if isinstance(mod, ModuleValue):
                 value = mod.globals.get(alias.name, Opaque(f'"{alias.name}" not found in "{mod.name}"'))

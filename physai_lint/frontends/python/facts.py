@@ -214,7 +214,7 @@ def _candidates(text: str, path: str) -> set[str]:
     return out
 
 
-def _star_names(n: ast.ImportFrom) -> frozenset[str] | None:
+def star_names(n: ast.ImportFrom) -> frozenset[str] | None:
     """What ``from <module> import *`` may bind: for a public launch / launch_ros module, at most
     the names it binds in some distro (``launch-exports.json``); None for any other module."""
     if n.level or not n.module or n.module.split(".")[0] not in _LAUNCH_PACKAGES:
@@ -229,7 +229,7 @@ def undefined_names(tree: ast.Module, nodes: list[ast.AST], spans: SpanMaker, te
     star_bound: set[str] = set()
     for n in nodes:
         if isinstance(n, ast.ImportFrom) and any(a.name == "*" for a in n.names):
-            names = _star_names(n)
+            names = star_names(n)
             if names is None:
                 return []  # any name may come from it
             star_bound |= names

@@ -9,6 +9,7 @@ from physai_lint.checks.base import CheckContext
 from physai_lint.closematch import close_matches
 from physai_lint.model.fields import objects
 from physai_lint.model.launch import PythonFacts
+from physai_lint.model.span import Span
 from physai_lint.resolve.model import LaunchResult, NodeInstance
 
 # rclcpp_components' container executables (ComposableNodeContainer's usual ones).
@@ -94,6 +95,11 @@ def ir_objects(ctx: CheckContext, path: str) -> list[Any]:
 
 def where(node: NodeInstance) -> str:
     return node.fqn or (f'"{node.package}/{node.executable}"' if node.package else "the node")
+
+
+def line_ref(span: Span, here: Span) -> str:
+    """``span`` named from a message about ``here``: "line N" in the same file, else "file:N"."""
+    return f"line {span.line}" if span.file == here.file else f"{relpath(span.file)}:{span.line}"
 
 
 def relpath(path: str | None) -> str:

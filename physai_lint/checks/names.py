@@ -6,7 +6,7 @@ import re
 from collections.abc import Iterator
 from typing import Any
 
-from physai_lint.checks._util import all_nodes, relpath, switched_off_by
+from physai_lint.checks._util import all_nodes, line_ref, relpath, switched_off_by
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.checks.topics import graphs
 from physai_lint.interfaces.naming import default_named, name_note
@@ -65,11 +65,9 @@ def duplicate_node_name(ctx: CheckContext) -> Iterator[Diagnostic]:
                 yield _repeated(launch, node, sites)
                 continue
             first_at = p.spans.get("name", p.span)
-            where = f"line {first_at.line}" if first_at.file == span.file else \
-                f"{relpath(first_at.file)}:{first_at.line}"
             yield Diagnostic(
                 "N101", span,
-                f'node "{node.fqn}" is launched twice (also at {where}); '
+                f'node "{node.fqn}" is launched twice (also at {line_ref(first_at, span)}); '
                 f"services, parameters and topics of the two collide{name_note((node, p))}",
                 help="give each node its own name or namespace (PushRosNamespace / namespace=)",
                 related=(Related(first_at, "first launched here"),),
@@ -95,10 +93,9 @@ def _component_twice(node: NodeInstance, p: NodeInstance, span: Any) -> Diagnost
         hint = (" (a component does not take its container's namespace: give it "
                 "namespace= or push one around the container)")
     first_at = p.spans.get("name", p.span)
-    where = f"line {first_at.line}" if first_at.file == span.file else f"{relpath(first_at.file)}:{first_at.line}"
     return Diagnostic(
         "N101", span,
-        f'node "{node.fqn}" is {_where(node)} here and {_where(p)} at {where}; '
+        f'node "{node.fqn}" is {_where(node)} here and {_where(p)} at {line_ref(first_at, span)}; '
         f"services, parameters and topics of the two collide{hint}{name_note((node, p))}",
         help="give each node its own name or namespace (namespace= on the composable node, or "
              "PushRosNamespace around it)",

@@ -6,7 +6,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import Any
 
-from physai_lint.checks._util import all_nodes, run_memo, where
+from physai_lint.checks._util import all_nodes, line_ref, run_memo, where
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.graph.system import Endpoint, SystemGraph, build_graph, remap_target, similar
 from physai_lint.interfaces.model import LIFECYCLE_ENDPOINTS
@@ -132,7 +132,7 @@ def _shadowed_rules(ctx: CheckContext) -> Iterator[Diagnostic]:
         yield Diagnostic(
             "T102", r.span,
             f'remap "{r.src}" -> "{r.dst}" never applies to {node.fqn or node.executable}: '
-            f'{_rule_words(earlier)} "{earlier.src}" -> "{earlier.dst}" (line {earlier.span.line}) '
+            f'{_rule_words(earlier)} "{earlier.src}" -> "{earlier.dst}" ({line_ref(earlier.span, r.span)}) '
             f'matches "{name}" first, and rcl applies only the first rule that matches',
             help=("remove one of the two rules, or give the SetRemap a narrower scope (a GroupAction "
                   "around the nodes it is meant for)" if earlier.origin == "global" else

@@ -31,6 +31,21 @@ def demo_package(tmp_path: Path) -> Callable[[dict[str, str]], Path]:
 
 
 @pytest.fixture
+def demo_nodes(demo_package: Callable[[dict[str, str]], Path]) -> Callable[..., Path]:
+    """``demo_nodes(sources, files)``: the demo package building one executable per entry of
+    ``sources`` (name -> C++ text, in ``src/<name>.cpp``) into lib/demo, with ``files``."""
+
+    def write(sources: dict[str, str], files: dict[str, str]) -> Path:
+        exes = " ".join(sources)
+        cmake = "project(demo)\n" + "".join(f"add_executable({e} src/{e}.cpp)\n" for e in sources) + (
+            f"install(TARGETS {exes} DESTINATION lib/${{PROJECT_NAME}})\n"
+            "install(DIRECTORY launch DESTINATION share/${PROJECT_NAME})\n")
+        return demo_package({"CMakeLists.txt": cmake, **{f"src/{e}.cpp": t for e, t in sources.items()}, **files})
+
+    return write
+
+
+@pytest.fixture
 def demo_graph(tmp_path: Path, demo_package: Callable[[dict[str, str]], Path]
                ) -> Callable[..., dict[str, dict[str, Any]]]:
     """``demo_graph(files, entry, distro=..., **launch_args)``: the graph JSON nodes of

@@ -2,7 +2,6 @@
 ``load_composable_nodes.get_composable_node_load_request``)."""
 from __future__ import annotations
 
-import re
 from typing import TYPE_CHECKING, Any
 
 from physai_lint.model import launch as ir

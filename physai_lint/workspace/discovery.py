@@ -87,10 +87,15 @@ def sniff_param_file(path: str) -> bool:
         return False
 
 
-def has_ignore_marker(dirpath: str, names: set[str] | None = None) -> bool:
+def ignore_marker(dirpath: str, names: set[str] | None = None) -> str | None:
+    """The marker (COLCON_IGNORE, ...) that makes colcon skip ``dirpath``, or None."""
     if names is not None:
-        return any(m in names for m in IGNORE_MARKERS)
-    return any(os.path.exists(os.path.join(dirpath, m)) for m in IGNORE_MARKERS)
+        return next((m for m in IGNORE_MARKERS if m in names), None)
+    return next((m for m in IGNORE_MARKERS if os.path.exists(os.path.join(dirpath, m))), None)
+
+
+def has_ignore_marker(dirpath: str, names: set[str] | None = None) -> bool:
+    return ignore_marker(dirpath, names) is not None
 
 
 def skip_dir_name(name: str) -> bool:

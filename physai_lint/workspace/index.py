@@ -18,7 +18,7 @@ from physai_lint.bounded_read import read_at_most
 from ._glob import compile_glob
 from ._model import BuildInfo, InstallRule
 from .cmake import read_cmake_package, read_listfile
-from .discovery import IGNORE_MARKERS, UsageError, dir_identity, has_ignore_marker, skip_dir_name
+from .discovery import UsageError, dir_identity, ignore_marker, skip_dir_name
 from .distro import DISTROS, released_packages
 from .package_xml import _NAME_RX, ManifestInfo, parse_manifest
 from .setup_py import read_setup_py
@@ -585,9 +585,10 @@ def _find_packages(root: str, ignored: list[tuple[str, str]] | None = None) -> l
         except OSError:
             return
         names = {e.name for e in entries}
-        if has_ignore_marker(d, names):
+        marker = ignore_marker(d, names)
+        if marker is not None:
             if ignored is not None and "package.xml" in names:
-                ignored.append((d, next(m for m in IGNORE_MARKERS if m in names)))
+                ignored.append((d, marker))
             return
         if "package.xml" in names:
             found.append(d)

@@ -31,16 +31,8 @@ def generate_launch_description():
 """
 
 
-CMAKE = """project(demo)
-add_executable(filter src/filter.cpp)
-add_executable(consumer src/consumer.cpp)
-install(TARGETS filter consumer DESTINATION lib/${PROJECT_NAME})
-install(DIRECTORY launch DESTINATION share/${PROJECT_NAME})
-"""
-
-
-def _findings(tmp_path: Path, demo_package: Any, files: dict[str, str], entry: str) -> list[tuple[str, int, str]]:
-    pkg = demo_package({"CMakeLists.txt": CMAKE, "src/filter.cpp": "", "src/consumer.cpp": "", **files})
+def _findings(tmp_path: Path, demo_nodes: Any, files: dict[str, str], entry: str) -> list[tuple[str, int, str]]:
+    pkg = demo_nodes({"filter": "", "consumer": ""}, files)
     (tmp_path / "interfaces.yaml").write_text(INTERFACES)
     opts = CheckOptions(paths=[str(pkg / entry)], workspace=str(tmp_path), cache=False,
                         interfaces=[str(tmp_path / "interfaces.yaml")])
@@ -53,21 +45,21 @@ def _findings(tmp_path: Path, demo_package: Any, files: dict[str, str], entry: s
     "arguments=['--ros-args', '-r', 'scan_filtered:=scan_clean']",
     "arguments=['scan_filtered:=scan_clean']",  # the deprecated form, outside --ros-args
 ])
-def test_a_command_line_rule_renames_the_topic(tmp_path: Path, demo_package: Any, how: str) -> None:
-    found = _findings(tmp_path, demo_package, {"launch/a.launch.py": PY.format(how=how)}, "launch/a.launch.py")
+def test_a_command_line_rule_renames_the_topic(tmp_path: Path, demo_nodes: Any, how: str) -> None:
+    found = _findings(tmp_path, demo_nodes, {"launch/a.launch.py": PY.format(how=how)}, "launch/a.launch.py")
     assert [f for f in found if f[0] in ("T201", "T202")] == []
 
 
-def test_without_the_rule_the_topics_do_not_meet(tmp_path: Path, demo_package: Any) -> None:
-    found = _findings(tmp_path, demo_package, {"launch/a.launch.py": PY.format(how="arguments=['--ros-args', "
+def test_without_the_rule_the_topics_do_not_meet(tmp_path: Path, demo_nodes: Any) -> None:
+    found = _findings(tmp_path, demo_nodes, {"launch/a.launch.py": PY.format(how="arguments=['--ros-args', "
                                                                                "'--log-level', 'x:=warn']")},
                       "launch/a.launch.py")
     assert [f[0] for f in found if f[0] in ("T201", "T202")] == ["T201"]  # T202: near misses only
 
 
-def test_a_command_line_rule_wins_over_remappings(tmp_path: Path, demo_package: Any) -> None:
+def test_a_command_line_rule_wins_over_remappings(tmp_path: Path, demo_nodes: Any) -> None:
     how = "ros_arguments=['-r', 'scan_filtered:=scan_clean'], remappings=[('scan_filtered', 'other')]"
-    found = _findings(tmp_path, demo_package, {"launch/a.launch.py": PY.format(how=how)}, "launch/a.launch.py")
+    found = _findings(tmp_path, demo_nodes, {"launch/a.launch.py": PY.format(how=how)}, "launch/a.launch.py")
     assert [f for f in found if f[0] in ("T201", "T202")] == []
     assert [(f[0], f[1]) for f in found if f[0] == "T102"] == [("T102", 7)]
 
@@ -81,8 +73,8 @@ XML = """<launch>
 """
 
 
-def test_rcl_refuses_a_relative_namespace_and_a_bad_token(tmp_path: Path, demo_package: Any) -> None:
-    found = _findings(tmp_path, demo_package, {"launch/a.launch.xml": XML}, "launch/a.launch.xml")
+def test_rcl_refuses_a_relative_namespace_and_a_bad_token(tmp_path: Path, demo_nodes: Any) -> None:
+    found = _findings(tmp_path, demo_nodes, {"launch/a.launch.xml": XML}, "launch/a.launch.xml")
     assert [(line, msg) for code, line, msg in found if code == "N105"] == [
         (2, 'remap rule "__ns:=robot1" is invalid: "robot1" is not a fully qualified namespace (it must '
             'start with "/"); rcl cannot parse it, so the node fails to start'),
@@ -91,7 +83,7 @@ def test_rcl_refuses_a_relative_namespace_and_a_bad_token(tmp_path: Path, demo_p
     ]
 
 
-def test_node_and_namespace_rules_rename_the_node(tmp_path: Path, demo_package: Any, demo_graph: Any) -> None:
+def test_node_and_namespace_rules_rename_the_node(demo_graph: Any) -> None:
     nodes = demo_graph({"launch/a.launch.xml": XML}, "launch/a.launch.xml")
     assert nodes["renamed"]["fqn"] == "/robot2/renamed"
 

@@ -15,13 +15,6 @@ demo/joy:
 demo/lidar:
   publishers: [{name: scan, type: sensor_msgs/msg/LaserScan}]
 """
-CMAKE = """project(demo)
-add_executable(mux src/a.cpp)
-add_executable(joy src/a.cpp)
-add_executable(lidar src/a.cpp)
-install(TARGETS mux joy lidar DESTINATION lib/${PROJECT_NAME})
-install(DIRECTORY launch DESTINATION share/${PROJECT_NAME})
-"""
 LAUNCH = """<launch>
   <group><push_ros_namespace namespace="robot1"/>
     <node pkg="demo" exec="mux" name="mux"/>
@@ -36,8 +29,8 @@ LAUNCH = """<launch>
 """
 
 
-def test_another_robots_copy_is_no_near_miss(tmp_path: Path, demo_package: Any) -> None:
-    pkg = demo_package({"CMakeLists.txt": CMAKE, "src/a.cpp": "", "launch/a.launch.xml": LAUNCH})
+def test_another_robots_copy_is_no_near_miss(tmp_path: Path, demo_nodes: Any) -> None:
+    pkg = demo_nodes({"mux": "", "joy": "", "lidar": ""}, {"launch/a.launch.xml": LAUNCH})
     (tmp_path / "interfaces.yaml").write_text(INTERFACES)
     opts = CheckOptions(paths=[str(pkg / "launch/a.launch.xml")], workspace=str(tmp_path), cache=False,
                         interfaces=[str(tmp_path / "interfaces.yaml")])

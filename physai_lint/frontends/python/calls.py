@@ -102,8 +102,12 @@ def env_read(ev: Evaluator, name: Any, span: Span) -> Any:
 
 
 def contains(ev: Evaluator, obj: Any, key: Any, span: Span) -> Any:
-    """``name in context.launch_configurations``: a read of the name (L102), true where the
-    resolver found it set (``specialize``), else known only at launch time. None: not this test."""
+    """``key in obj`` for what launch files test at description time: ``name in os.environ`` (true
+    for the variables the check knows), and ``name in context.launch_configurations``, a read of
+    the name (L102), true where the resolver found it set (``specialize``). Else known only at
+    launch time; None: not one of these tests."""
+    if isinstance(obj, Ref) and obj.qual == "os.environ":
+        return True if isinstance(key, str) and key in ev.env else Opaque("depends on the environment", span)
     if not isinstance(obj, LaunchConfigsSym):
         return None
     if not isinstance(key, str):

@@ -180,9 +180,6 @@ class ExpressionsMixin:
                 r = calls.contains(self, right, left, self.span(n, scope))
                 if isinstance(op, ast.NotIn) and isinstance(r, bool):
                     r = not r
-            if r is None and isinstance(right, Ref) and right.qual == "os.environ" and isinstance(op, (ast.In, ast.NotIn)):
-                known = isinstance(left, str) and left in self.env
-                r = (isinstance(op, ast.In)) if known else Opaque("depends on the environment", self.span(n, scope))
             if r is None:
                 if isinstance(op, (ast.Is, ast.IsNot)) and not isinstance(left, Opaque) and not isinstance(right, Opaque):
                     r = CMPOPS[type(op)](left, right)

@@ -188,6 +188,7 @@ def _yaml_types(el: Element, accepted: frozenset[str]) -> Iterator[Diagnostic]:
     for name, attr in el.attrs.items():
         if (tag, name) == ("param", "value"):
             yield from _yaml_param_list(el, attr)
+            yield from _yaml_param_typed(el, attr)
         if name not in accepted or (tag, name) in _ANY or name == "children":
             continue
         kind = _yaml_kind(attr)
@@ -286,6 +287,73 @@ def _yaml_param_list(el: Element, attr: Attr) -> Iterator[Diagnostic]:
         f"launch fails with {why}",
         "make every item the same type (e.g. all floats: 1.0, 2.5; all strings in quotes)",
         key=name)
+
+
+_TYPE_IDS: dict[str, type] = {"str": str, "bool": bool, "int": int, "float": float}
+
+
+def _yaml_param_typed(el: Element, attr: Attr) -> Iterator[Diagnostic]:
+    """A YAML parameter value that is not of the Python type its ``type:`` names (L010).
+
+    ``Node.parse_nested_parameters`` reads ``value`` with ``get_attr(data_type=<type>)``, which
+    in launch_yaml converts nothing (``is_instance_of`` with strings allowed, so ``int`` is not a
+    ``float``); a string without substitutions then stays a str (``parse_if_substitutions``) and
+    ``ParameterValue`` -> ``normalize_typed_substitution`` raises TypeError unless the type is str.
+    A string with substitutions is converted when it is evaluated and is left alone here."""
+    type_attr = el.attrs.get("type")
+    if type_attr is None or not type_attr.is_str:
+        return
+    ident = type_attr.text.strip()
+    listed = ident.startswith("list_of_")
+    want = _TYPE_IDS.get(ident[len("list_of_"):] if listed else ident)
+    if want is None:
+        return
+    name = el.attrs["name"].text if "name" in el.attrs else "?"
+    kind = _yaml_kind(attr)
+    shown = f"the list {_list_text(attr)}" if kind is tuple else _shown(attr, kind)
+    if listed:
+        if kind is not tuple:
+            why = (f"TypeError \"Attribute 'value' of Entity 'param' expected to be of type "
+                   f"'typing.List[{want.__name__}]', got '<class '{_PY_TYPE.get(kind, 'str')}'>'\"")
+            help_ = f"write a YAML list: value: [...], or drop type: {ident}"
+        else:
+            kinds = [_yaml_kind(i) for i in attr.items]
+            if any(k is not str and not issubclass(k, want) for k in kinds):
+                bad = next(k for k in kinds if k is not str and not issubclass(k, want))
+                why = (f"TypeError \"Attribute 'value' of Entity 'param' expected to be of type "
+                       f"'typing.List[{want.__name__}]', got '<class 'list'>'\" (an item is "
+                       f"{_YAML_KIND.get(bad, 'a list')})")
+                help_ = (f"write every item as a {want.__name__}"
+                         + (" (1.0, not 1)" if want is float else ""))
+            elif want is not str and kinds and all(k is str for k in kinds) and \
+                    not all("$(" in i.text for i in attr.items):
+                why = (f"TypeError \"Got a list of '<class 'str'>', expected a list of "
+                       f"'<class '{want.__name__}'>'\": launch_yaml does not convert quoted items")
+                help_ = "write the items without quotes"
+            else:
+                return
+    elif kind is str:
+        if want is str or "$(" in attr.text:
+            return
+        why = (f"TypeError \"value='{attr.text}' is not an instance of <class "
+               f"'{want.__name__}'>\": launch_yaml does not convert a quoted value")
+        help_ = f"write it without quotes: value: {attr.text}, or drop type: {ident}"
+    elif kind is tuple or not issubclass(kind, want):
+        why = (f"TypeError \"Attribute 'value' of Entity 'param' expected to be of type "
+               f"'<class '{want.__name__}'>', got '<class '{_PY_TYPE.get(kind, 'str')}'>'\"")
+        help_ = (f'quote it: value: "{attr.text}"' if want is str else
+                 f"write it as a float: value: {_as_float(attr.text)}" if want is float and
+                 kind is int else f"write a {want.__name__}, or drop type: {ident}")
+    else:
+        return
+    yield Diagnostic(
+        "L010", attr.value_span, f'parameter "{name}" is given {shown} with type: {ident}; '
+        f"launch fails with {why}", help_, key=f"param:{name}:type:{ident}")
+
+
+def _list_text(attr: Attr) -> str:
+    return "[" + ", ".join(f'"{i.text}"' if i.is_str else "[...]" if i.items else i.text
+                           for i in attr.items) + "]"
 
 
 def _shown(attr: Attr, kind: type) -> str:

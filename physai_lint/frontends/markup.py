@@ -338,6 +338,11 @@ class _Builder:
         if not attr.is_str and attr.typed is not None:
             return PLit(attr.typed, attr.value_span)  # type: ignore[arg-type]
         value = self.value_of(attr)
+        if self.fmt == "yaml" and sep is None and vtype in (None, "str", "yaml") \
+                and all(isinstance(p, Text) for p in value):
+            # launch_yaml's get_attr does not convert, and parse_if_substitutions keeps a string
+            # without substitutions as the str it is: value: "10" reaches the node as "10"
+            return PLit("".join(p.text for p in value if isinstance(p, Text)), attr.value_span)
         if vtype is None and sep is None and all(isinstance(p, Text) for p in value):
             from physai_lint.params.typing import yaml_syntax_error
 

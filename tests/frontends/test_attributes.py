@@ -231,3 +231,35 @@ def test_yaml_boolean_help_writes_the_boolean_the_text_means(value: str, help_: 
 
     lf = parse("/ws/a.launch.yaml", f"launch:\n- group:\n    scoped: {value}\n    children:\n    - log: {{message: a}}\n")
     assert [d.help for d in lf.diagnostics if d.code == "L010"] == [help_]
+
+
+# ---- L010: a YAML parameter value of another type than its type: -------------------------------
+# Each row was run through launch_ros humble's Node.parse_nested_parameters (launch_yaml 1.0.7):
+# get_attr(data_type=...) converts nothing, and ParameterValue rejects a plain str of another type.
+@pytest.mark.parametrize("param, type_", [
+    ('{name: q, value: "10", type: int}', "int"),  # value='10' is not an instance of int
+    ('{name: q, value: "true", type: bool}', "bool"),
+    ("{name: q, value: 10, type: float}", "float"),  # an int is not a float
+    ("{name: q, value: 10, type: str}", "str"),
+    ("{name: q, value: 1.5, type: int}", "int"),
+    ('{name: q, value: ["1", "2"], type: list_of_int}', "list_of_int"),  # "Got a list of str"
+    ("{name: q, value: [1, 2], type: list_of_float}", "list_of_float"),
+    ('{name: q, value: "1,2", type: list_of_int}', "list_of_int"),
+])
+def test_yaml_parameter_value_of_another_type(param: str, type_: str) -> None:
+    text = f"launch:\n- node:\n    pkg: p\n    exec: e\n    param:\n    - {param}\n"
+    assert found(text) == [("L010", 6, f"param:q:type:{type_}")]
+
+
+@pytest.mark.parametrize("param", [
+    "{name: q, value: 10, type: int}",
+    "{name: q, value: true, type: int}",  # isinstance(True, int)
+    '{name: q, value: "10", type: str}',
+    '{name: q, value: "10", type: yaml}',
+    '{name: q, value: "$(var n)", type: int}',  # converted when evaluated
+    "{name: q, value: [1.0, 2.5], type: list_of_float}",
+    '{name: q, value: ["a", "b"], type: list_of_str}',
+])
+def test_yaml_parameter_value_of_its_type(param: str) -> None:
+    text = f"launch:\n- node:\n    pkg: p\n    exec: e\n    param:\n    - {param}\n"
+    assert found(text) == []

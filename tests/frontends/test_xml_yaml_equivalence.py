@@ -13,15 +13,27 @@ from physai_lint.frontends.tags import unknown_markup  # noqa: E402
 from physai_lint.frontends.xml_launch import parse_xml_launch  # noqa: E402
 from physai_lint.frontends.yaml_launch import parse_yaml_launch  # noqa: E402
 from physai_lint.model import launch as ir  # noqa: E402
+from physai_lint.model import values  # noqa: E402
 from physai_lint.model.span import Span  # noqa: E402
+from physai_lint.params.typing import pyyaml_type  # noqa: E402
 
 FIXTURES = Path(__file__).parent / "fixtures" / "markup"
 
 
 def strip(obj: Any) -> Any:
-    """Drop spans and ids (and keep only the keys of ``field_spans``) recursively."""
+    """Drop spans and ids (and keep only the keys of ``field_spans``) recursively.
+
+    A parameter value launch reads without substitutions is compared as the value it becomes: XML
+    ``value="10.0"`` is YAML-typed at run time (a ``PSubst``) while YAML ``value: 10.0`` is a float
+    as written (a ``PLit``); both reach the node as 10.0."""
     if isinstance(obj, Span):
         return None
+    if isinstance(obj, values.PSubst) and obj.sep is None \
+            and all(isinstance(p, values.Text) for p in obj.value):
+        text = "".join(p.text for p in obj.value)
+        return ("param-value", text if obj.value_type == "str" else pyyaml_type(text))
+    if isinstance(obj, values.PLit):
+        return ("param-value", obj.value)
     if dataclasses.is_dataclass(obj) and not isinstance(obj, type):
         out: dict[str, Any] = {"__type__": type(obj).__name__}
         for f in dataclasses.fields(obj):

@@ -39,15 +39,20 @@ def test_substitution_columns_in_plain_and_quoted_scalars() -> None:
     assert second.value[1].span == Span(F, 6, 7, 6, 15)
 
 
-def test_non_string_param_values_keep_yaml_types() -> None:
+def test_param_values_keep_yaml_types() -> None:
+    """launch_yaml does not convert a value, and parse_if_substitutions keeps a string without
+    substitutions as the str it is: only a value with substitutions is YAML-typed at run time."""
     launch = parse("launch:\n- node:\n    exec: x\n    param:\n    - {name: a, value: 3}\n"
-                   "    - {name: b, value: [1, 2]}\n    - {name: c, value: '3'}\n")
+                   "    - {name: b, value: [1, 2]}\n    - {name: c, value: '3'}\n"
+                   "    - {name: d, value: ['1', '2']}\n    - {name: e, value: '$(var n)'}\n")
     node = launch.actions[0]
     assert isinstance(node, ir.NodeAction)
     values = [p.entries[0].value for p in node.parameters]  # type: ignore[union-attr]
     assert isinstance(values[0], PLit) and values[0].value == 3
     assert isinstance(values[1], PLit) and values[1].value == (1, 2)
-    assert isinstance(values[2], PSubst) and literal_of(values[2].value) == "3"
+    assert isinstance(values[2], PLit) and values[2].value == "3"
+    assert isinstance(values[3], PLit) and values[3].value == ("1", "2")
+    assert isinstance(values[4], PSubst) and values[4].value_type is None
 
 
 def test_duplicate_key_is_x006_at_second_occurrence() -> None:

@@ -50,3 +50,34 @@ def test_xml_type_float_coerces(demo_findings: Any) -> None:
 def test_parameter_value_type_float_coerces(demo_findings: Any) -> None:
     assert _p105(demo_findings, "a.launch.py", PY) == [
         (15, 'parameter "publish_frequency" of /untyped')]
+
+
+YAML = """launch:
+- arg: {name: rate, default: "50.0"}
+- node:
+    pkg: robot_state_publisher
+    exec: robot_state_publisher
+    name: quoted
+    param:
+    - {name: publish_frequency, value: "50.0"}
+- node:
+    pkg: robot_state_publisher
+    exec: robot_state_publisher
+    name: plain
+    param:
+    - {name: publish_frequency, value: 50.0}
+- node:
+    pkg: robot_state_publisher
+    exec: robot_state_publisher
+    name: substituted
+    param:
+    - {name: publish_frequency, value: "$(var rate)"}
+"""
+
+
+def test_yaml_launch_keeps_a_quoted_value_a_string(demo_findings: Any) -> None:
+    """launch_yaml converts nothing, and parse_if_substitutions keeps a string without
+    substitutions as a str: value: "50.0" reaches the node as the string "50.0" (XML's
+    value="50.0" is a double). A substituted value is YAML-typed when it is evaluated."""
+    assert _p105(demo_findings, "a.launch.yaml", YAML) == [
+        (8, 'parameter "publish_frequency" of /quoted')]

@@ -177,19 +177,30 @@ def structure(ctx: CheckContext) -> Iterator[Diagnostic]:
                 yield d
 
 
-def _read_by_components_only(ctx: CheckContext) -> set[str]:
-    """Files with no ros__parameters key (``ParamFileModel.flat``) that only composable nodes load:
-    launch_ros reads them with PyYAML and gives the node every key (to_parameters_list), so what
-    rcl's parser would reject never reaches rcl."""
-    flat = {p for p, m in ctx.param_files.items() if m.flat is not None}
-    if not flat:
+def _read_by_components_only(ctx: CheckContext, flat_only: bool = True) -> set[str]:
+    """Files that only composable nodes load (with ``flat_only``, only those with no
+    ros__parameters key, ``ParamFileModel.flat``): launch_ros reads them with PyYAML and sends the
+    values in the load request (to_parameters_list), so what rcl's parser would reject never
+    reaches rcl."""
+    wanted = {p for p, m in ctx.param_files.items() if m.flat is not None or not flat_only}
+    if not wanted:
         return set()
     kinds: dict[str, set[bool]] = {}
     for _, node in all_nodes(ctx):
         for src in node.param_sources:
-            if isinstance(src, ResolvedParamFile) and src.source in flat:
+            if isinstance(src, ResolvedParamFile) and src.source in wanted:
                 kinds.setdefault(src.source, set()).add(node.kind == "composable_node")
     return {p for p, k in kinds.items() if k == {True}}
+
+
+def _launch_array_mix(model: Any, span: Any) -> set[str] | None:
+    """The PyYAML types of the array an rcl P106 points into (its item at ``span``)."""
+    blocks = list(model.blocks) + ([model.flat] if model.flat is not None else [])
+    for block in blocks:
+        for prm in block.params:
+            if prm.item_spans and span in prm.item_spans and isinstance(prm.launch_value, list):
+                return {type(x).__name__ for x in prm.launch_value}
+    return None
 
 
 def _templated(d: Diagnostic) -> bool:
@@ -227,10 +238,28 @@ def _frontend_rejects(ctx: CheckContext, prm: Any) -> bool:
 
 @rule("P106", "mixed-type-array")
 def mixed_array(ctx: CheckContext) -> Iterator[Diagnostic]:
+    components_only = None
     for path in sorted(ctx.param_files):
         for d in ctx.param_files[path].diagnostics:
-            if d.code == "P106" and not _templated(d):
+            if d.code != "P106" or _templated(d):
+                continue
+            if components_only is None:
+                components_only = _read_by_components_only(ctx, flat_only=False)
+            if path not in components_only:
                 yield d
+                continue
+            # launch_ros normalizes a component's arrays itself (normalize_parameter_dict ->
+            # _normalize_parameter_array_value): ints with floats become a double array; any
+            # other mix fails evaluate_parameter_dict's uniform-type check
+            mix = _launch_array_mix(ctx.param_files[path], d.span)
+            if mix is None or mix <= {"int", "float"}:
+                continue
+            yield Diagnostic(
+                "P106", d.span, d.message.split(" (rcl:")[0] + " (only composable nodes load this "
+                "file: launch_ros fails loading them with TypeError \"Expected a non-empty sequence, "
+                "with items of uniform type. Allowed sequence item types are bool, int, float, "
+                'str.")', help="make every element the same type (quote every element of a "
+                "string array)", key=d.key)
     seen: set[object] = set()
     for _, node in all_nodes(ctx):
         for src in node.param_sources:

@@ -115,6 +115,9 @@ class _Parser:
         self.seq_key_span: Span | None = None
         # a mapping inside a sequence (``- interfaces: [a, b]``): map_depth outside it, while open
         self.seq_map_depth: int | None = None
+        # rcl's error at the first item of another type, raised at the sequence's end so that the
+        # array is still recorded for launch_ros, which reads composable nodes' files itself
+        self.seq_mixed: _RclError | None = None
         self.failed = False
 
     # -- helpers ----------------------------------------------------------------------------------
@@ -144,6 +147,8 @@ class _Parser:
         self.first_of_name = True
 
     def err(self, code: str, span: Span, message: str, help: str | None = None) -> None:
+        if self.seq_mixed is not None:  # rcl stopped at the mixed item, before this
+            raise self.seq_mixed
         raise _RclError(code, span, message, help)
 
     def cur_name(self) -> str:
@@ -191,13 +196,14 @@ class _Parser:
         else:
             if self.seq_type is None:
                 self.seq_type = kind
-            elif self.seq_type != kind:
-                self.err("P106", span,
-                         f"array \"{self.cur_name()}\" mixes types: {self.seq_type} then {kind} "
-                         f"\"{value}\" (rcl: \"Sequence should be of same type. Value type "
-                         f"'{kind}' do not belong at line_num {span.line}\")",
-                         "make every element the same type (e.g. write 1.0 instead of 1 in a "
-                         "double array, or quote every element of a string array)")
+            elif self.seq_type != kind and self.seq_mixed is None:
+                self.seq_mixed = _RclError(
+                    "P106", span,
+                    f"array \"{self.cur_name()}\" mixes types: {self.seq_type} then {kind} "
+                    f"\"{value}\" (rcl: \"Sequence should be of same type. Value type "
+                    f"'{kind}' do not belong at line_num {span.line}\")",
+                    "make every element the same type (e.g. write 1.0 instead of 1 in a "
+                    "double array, or quote every element of a string array)")
             if self.seq_map_depth is not None and self.seq_start is None:
                 self.err("P104", span,
                          f"\"{value}\" is a value in a mapping inside a sequence (parameter "
@@ -288,6 +294,11 @@ class _Parser:
                 fp = FileParam(name, list(self.seq_items), kind, self.raw(start, ev), span,
                                self.seq_key_span or span, False, list(self.seq_launch),
                                tuple(self.seq_spans) if len(self.seq_spans) == len(self.seq_items) else None)
+                if self.seq_mixed is not None:
+                    if self.block is not None:
+                        self.block.params.append(fp)
+                    mixed, self.seq_mixed = self.seq_mixed, None
+                    raise mixed
                 self.op("set", kind, list(self.seq_items), fp)
             else:
                 fp = FileParam(name, [], "not_set", self.raw(start, ev), span,

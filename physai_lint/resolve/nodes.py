@@ -133,13 +133,16 @@ class NodeBuilder:
         return loc.source, loc.status
 
     def global_parameter(self, name: str, pvalue: v.PValue, scope: Scope, span: Span) -> ResolvedParam:
-        """A ``SetParameter``'s value, typed as the node gets it (through ``-p name:=text``)."""
-        return _cli_typed(resolve_pvalue(name, pvalue, lambda x: self.inst.ev.eval(x, scope), span))
+        """A ``SetParameter``'s value as ``SetParameter.execute`` evaluates it."""
+        return resolve_pvalue(name, pvalue, lambda x: self.inst.ev.eval(x, scope), span)
 
     def _global_sources(self, scope: Scope, node_id: str, node_span: Span,
-                        own: tuple[ir.ParamSource, ...]) -> tuple[list[EffRemap], list[ParamSourceR]]:
+                        own: tuple[ir.ParamSource, ...], composable: bool = False
+                        ) -> tuple[list[EffRemap], list[ParamSourceR]]:
         """The global remaps and parameters a node gets (``own``: its own parameters, for the
-        scoped-group leaks that reach it)."""
+        scoped-group leaks that reach it). A process gets each SetParameter as ``-p name:=text``,
+        which rcl types again; a component gets the evaluated value itself, normalized by
+        launch_ros (``get_composable_node_load_request`` -> ``normalize_parameter_dict``)."""
         remaps: list[EffRemap] = []
         remap_list = scope.configs.get(REMAPS) or []
         for src, dst, span, reached in remap_list:
@@ -153,7 +156,8 @@ class NodeBuilder:
                 if name is None:
                     params.append(UnknownParams("SetParameter with an unknown name", span))
                 else:
-                    params.append(ResolvedParamDict((rp,), span, "global", "/**"))
+                    params.append(ResolvedParamDict((rp if composable else _cli_typed(rp),),
+                                                    span, "global", "/**"))
             else:
                 _, path, _, span = item
                 params.append(self._file(path, span, "global", False, scope))
@@ -348,7 +352,8 @@ class NodeBuilder:
         for _key, value, _span in cn.extra_arguments:  # read when the component is loaded
             self.inst.ev.eval(value, scope)
         node_id = self._id()
-        remaps, gparams = self._global_sources(scope, node_id, cn.span, cn.parameters)
+        remaps, gparams = self._global_sources(scope, node_id, cn.span, cn.parameters,
+                                               composable=True)
         params = gparams + self._own_params(cn.parameters, scope, fqn or "/**")
         inst_ = NodeInstance(
             id=node_id, kind="composable_node", package=package, executable=plugin, name=name,

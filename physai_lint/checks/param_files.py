@@ -38,6 +38,9 @@ def _consequence(src: ResolvedParamFile, node: Any) -> str:
     who = node.fqn or node.executable
     if src.opened_by:
         return f"{src.opened_by} opens it while launch runs and the launch fails with FileNotFoundError"
+    if src.origin == "command_line":
+        return (f"rcl cannot open it and {who} exits at start-up with \"Couldn't parse params file: "
+                f"'--params-file {src.path}'\"")
     if src.origin == "global" and node.kind != "composable_node":
         return (f"SetParametersFromFile hands it to every node after it, and launch fails when it "
                 f"starts {who} (AssertionError: Node._perform_substitutions asserts the file exists)")

@@ -71,11 +71,29 @@ def type_mismatch(ctx: CheckContext) -> Iterator[Diagnostic]:
         yield Diagnostic(
             "P105", ep.origin,
             f'parameter "{ep.name}" of {node.fqn or node.executable} is declared {decl.type}{where} '
-            f"but is given {_fmt(ep.value)}, {_article(got)} {got}; the node fails at start-up with "
-            f"InvalidParameterTypeException{fix}",
+            f"but is given {_fmt(ep.value)}, {_article(got)} {got}{_kept_slot(ep)}; the node fails "
+            f"at start-up with InvalidParameterTypeException{fix}",
             help=f"give {_article(decl.type)} {decl.type} value{fix}",
             related=((Related(decl.span, "declared here"),) if decl.span else ()),
             key=f"{node.fqn}:{ep.name}")
+
+
+def _kept_slot(ep: Any) -> str:
+    """Why a later value of another type under the same node key does not replace the one read:
+    rcl_variant_t keeps one slot per type and the client library reads the first set one (bool >
+    int > double > string > arrays; rclcpp ``parameter_value_from``), SEMANTICS §4b."""
+    from physai_lint.checks._util import line_ref
+
+    won = next((i for i, b in enumerate(ep.chain) if not b.overridden), None)
+    if won is None:
+        return ""
+    later = next((b for b in ep.chain[won + 1:] if b.span is not None and b.kind is not None
+                  and b.kind != ep.chain[won].kind and b.node_key == ep.chain[won].node_key), None)
+    if later is None:
+        return ""
+    return (f" (the later {_fmt(later.value)} at {line_ref(later.span, ep.origin)} does not replace "
+            f"it: rcl keeps one value per type under a node key and the node reads the "
+            f"{ep.chain[won].kind} first)")
 
 
 @rule("P107", "parameter-out-of-range")

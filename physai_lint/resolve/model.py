@@ -45,7 +45,7 @@ class ResolvedParamFile:
     source: str | None
     status: Literal["ok", "missing", "not_installed", "unknown"]
     span: Span
-    origin: Literal["global", "node"]
+    origin: Literal["global", "node", "command_line"]  # command_line: --params-file in arguments
     allow_substs: bool = False
     # A temporary file a substitution writes (nav2_common RewrittenYaml/ReplaceString): the model
     # rcl reads from it, positions mapped back to the source YAML; ``derived_from`` is that source.

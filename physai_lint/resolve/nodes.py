@@ -31,40 +31,52 @@ _VALUE_FLAGS = frozenset({"-p", "--param", "--params-file", "--log-level", "--lo
 _REMAP_FLAGS = frozenset({"-r", "--remap"})
 
 
-def command_line_rules(arguments: Any, ros_arguments: Any
-                       ) -> list[tuple[str | None, Span | None, bool]]:
-    """The remap rules a node's command line gives it, in rcl order (``rcl_parse_arguments``):
-    ``-r``/``--remap RULE`` in a ``--ros-args`` section, and a bare ``from:=to`` outside one (the
-    deprecated form rcl still reads). ``arguments`` and ``ros_arguments`` are (text or None,
-    value) pairs; launch_ros puts ``--ros-args`` before ``ros_arguments``. Each rule comes with its
-    span and whether it is in a ``--ros-args`` section (where rcl refuses a rule it cannot parse;
-    outside, such a text is not a rule). A rule whose text is unknown is None: it may match
-    anything."""
-    out: list[tuple[str | None, Span | None, bool]] = []
+def command_line_values(arguments: Any, ros_arguments: Any
+                        ) -> list[tuple[str, str | None, Any, Span | None]]:
+    """What rcl reads from a node's command line (``rcl_parse_arguments``), in order: (flag, text,
+    value, span) for the value after each flag of a ``--ros-args`` section that takes one (``-r``,
+    ``-p``, ``--params-file``...; ``?`` after an unknown argument, which may be any of them), and
+    ("", text, ...) for a bare ``from:=to`` outside one (the deprecated remap form rcl still
+    reads). ``arguments`` and ``ros_arguments`` are (text or None, value) pairs; launch_ros puts
+    ``--ros-args`` before ``ros_arguments``."""
+    out: list[tuple[str, str | None, Any, Span | None]] = []
     for section, start_in_ros in ((arguments, False), (ros_arguments, True)):
         in_ros, pending = start_in_ros, None
         for text, value in section:
-            span = v.span_of(value)
             if pending is not None:
-                if pending in _REMAP_FLAGS or pending == "?":
-                    if text is None or ":=" in text:
-                        out.append((text, span, True))
+                out.append((pending, text, value, v.span_of(value)))
                 pending = None
                 continue
             if text is None:
                 if in_ros:
-                    pending = "?"  # an unknown flag: perhaps -r, so the next may be a rule
+                    pending = "?"  # an unknown flag: perhaps -r or -p, so the next may be its value
                 continue
             if not in_ros:
                 if text == "--ros-args":
                     in_ros = True
                 elif ":=" in text:
-                    out.append((text, span, False))
+                    out.append(("", text, value, v.span_of(value)))
                 continue
             if text == "--":
                 in_ros = False
             elif text in _REMAP_FLAGS or text in _VALUE_FLAGS:
                 pending = text
+    return out
+
+
+def command_line_rules(arguments: Any, ros_arguments: Any
+                       ) -> list[tuple[str | None, Span | None, bool]]:
+    """The remap rules a node's command line gives it, in rcl order: ``-r``/``--remap RULE`` in a
+    ``--ros-args`` section, and a bare ``from:=to`` outside one. Each rule comes with its span and
+    whether it is in a ``--ros-args`` section (where rcl refuses a rule it cannot parse; outside,
+    such a text is not a rule). A rule whose text is unknown is None: it may match anything."""
+    out: list[tuple[str | None, Span | None, bool]] = []
+    for flag, text, _, span in command_line_values(arguments, ros_arguments):
+        if flag in _REMAP_FLAGS or flag == "?":
+            if text is None or ":=" in text:
+                out.append((text, span, True))
+        elif flag == "" and text is not None:
+            out.append((text, span, False))
     return out
 
 
@@ -242,6 +254,27 @@ class NodeBuilder:
             out.append(EffRemap(src, dst, r.span, "node", prefix))
         return out
 
+    def _command_line_params(self, arguments: Any, ros_arguments: Any, where: Span, scope: Scope
+                             ) -> list[ParamSourceR]:
+        """The parameters a node's own command line gives it: ``-p [node:]name:=value`` (typed by
+        rcl's YAML value parser, under node key ``/**`` or ``node``) and ``--params-file path``.
+        launch_ros puts them before its own ``--ros-args`` section, so every SetParameter and
+        ``parameters=`` entry overrides them (rcl merges all in command-line order)."""
+        out: list[ParamSourceR] = []
+        for flag, text, _, span in command_line_values(arguments, ros_arguments):
+            at = span or where
+            if flag == "--params-file":
+                out.append(self._file(text, at, "command_line", False, scope))
+            elif flag in ("-p", "--param") or (flag == "?" and (text is None or ":=" in text)):
+                if text is None:
+                    out.append(UnknownParams("a command-line parameter with an unknown value", at))
+                elif ":=" in text:
+                    prefix, name, raw = split_rule(text)
+                    if name:
+                        out.append(ResolvedParamDict((_rcl_value_param(name, raw, at),), at, "node",
+                                                     prefix or "/**"))
+        return out
+
     @staticmethod
     def _command_line_remaps(arguments: Any, ros_arguments: Any, where: Span) -> list[EffRemap]:
         out = []
@@ -295,6 +328,8 @@ class NodeBuilder:
         moved = next((r for r in cl_remaps if r.src == "__ns" and r.node_prefix is None), None)
         if moved is not None and moved.dst is not None:
             ns_raw, ns_given = moved.dst, True
+        cl_params = self._command_line_params(
+            zip(args, a.arguments or ()), zip(ros_args, a.ros_arguments or ()), a.span, scope)
         own_remaps = self._remaps(a.remappings, scope)
         keyed = name_given  # launch_ros keys a parameter dict by name= alone (node.py)
         if not name_given:
@@ -308,7 +343,7 @@ class NodeBuilder:
         node_id = self._id()
         remaps, gparams = self._global_sources(scope, node_id, a.span, a.parameters)
         key = fqn if (keyed and ns_specified and fqn) else "/**"
-        params = gparams + self._own_params(a.parameters, scope, key)
+        params = cl_params + gparams + self._own_params(a.parameters, scope, key)
         remaps = cl_remaps + remaps + own_remaps
         inst_ = NodeInstance(
             id=node_id, kind=a.kind, package=package, executable=executable, name=name,
@@ -477,6 +512,20 @@ def _parameter_matters(lst: list[Any], i: int, own: set[str], leaks: dict[int, A
             before, value = lst[j][2].value, item[2].value
             return before is None or value is None or (type(before), before) != (type(value), value)
     return True
+
+
+def _rcl_value_param(name: str, text: str, span: Span) -> ResolvedParam:
+    """``-p name:=text`` as ``rcl_parse_yaml_value`` reads it: the text is a YAML value (a flow
+    list is an array, a quoted text a string), typed by rcl's rules; None when rcl rejects it."""
+    from physai_lint.params.loader import load_param_file
+
+    if "\n" in text or "\r" in text:
+        return ResolvedParam(name, None, span, text, "yaml")
+    model = load_param_file("<command line>", f"n:\n  ros__parameters:\n    p: {text}\n")
+    value = None
+    if model.ok and model.blocks and len(model.blocks[0].params) == 1:
+        value = model.blocks[0].params[0].value
+    return ResolvedParam(name, value, span, text, "yaml")
 
 
 def _cli_typed(rp: ResolvedParam) -> ResolvedParam:

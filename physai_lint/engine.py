@@ -225,7 +225,9 @@ def _param_sources(r: Any, composable_only: bool = False) -> set[str]:
     reads a node's through --params-file)."""
     files = (getattr(s, "source", None) or getattr(s, "derived_from", None)  # RewrittenYaml: its source
              for n in r.nodes if not composable_only or n.kind == "composable_node"
-             for s in n.param_sources if getattr(s, "status", None) == "ok")
+             for s in n.param_sources if getattr(s, "status", None) == "ok"
+             # a file whose $(...) cannot all be performed here: still read, and its reads checked
+             or getattr(s, "derived_from", None) and getattr(s, "allow_substs", False))
     return {f for f in files if f}
 
 

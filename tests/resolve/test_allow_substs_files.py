@@ -54,3 +54,15 @@ def test_empty_or_directory_param_path_is_not_read_as_a_file(tmp_path, demo_pack
     messages = sorted(f.message for f in report.findings if f.code == "P101")
     assert len(messages) == 2
     assert 'path "" is empty' in messages[0] and "is a directory" in messages[1]
+
+
+def test_an_undeclared_configuration_read_in_the_file_is_l101(demo_findings):
+    # ParameterFile.evaluate performs the file's $(var robot) while launch runs: a configuration
+    # nothing declares raises SubstitutionFailure there, reported in the YAML file (the file's
+    # values are unknown then, and it was left out of the files whose findings are reported)
+    launch = LAUNCH.replace('<arg name="rate"/>', '<arg name="rate" default="1.0"/>')
+    launch = launch[:launch.index('  <node pkg="demo" exec="a" name="plain">')] + "</launch>\n"
+    files = {"config/p.yaml": PARAMS + "    frame: $(var robot)/base_link\n", "launch/a.launch.xml": launch}
+    found = demo_findings(files, "launch/a.launch.xml", "L101")
+    assert [(line, message.split(";")[0]) for line, message in found] == [
+        (6, 'launch configuration "robot" is read but never declared or set')]  # p.yaml:6

@@ -20,6 +20,26 @@ def effective(ctx: CheckContext, node: NodeInstance) -> dict[str, Any]:
     return cache[key]  # type: ignore[no-any-return]
 
 
+def declaration(iface: Any, name: str, params: dict[str, Any]) -> Any:
+    """The interface's declaration of parameter ``name`` for a node whose effective parameters are
+    ``params``: its own, or the generate_parameter_library ``__map_`` template it is an instance of
+    (the mapped array's value for this node, else its declared default, names the instances)."""
+    decls = iface.parameters or {}
+    decl = decls.get(name)
+    if decl is not None or not iface.parameter_patterns:
+        return decl
+    from physai_lint.interfaces.gpl import mapped_declaration
+
+    def keys_of(array: str) -> list[Any] | None:
+        ep = params.get(array)
+        if ep is not None:
+            return ep.value if ep.certain and isinstance(ep.value, list) else None
+        own = decls.get(array)
+        return own.default if own is not None and isinstance(own.default, list) else None
+
+    return mapped_declaration(decls, name, keys_of)
+
+
 def fully_known(ctx: CheckContext, node: Any, params: dict[str, Any]) -> bool:
     """Every parameter source of the node is statically known, so "unset" really is unset."""
     from physai_lint.resolve.model import ResolvedParamFile, UnknownParams

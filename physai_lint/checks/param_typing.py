@@ -22,7 +22,7 @@ import re
 from collections.abc import Iterator
 from typing import Any
 
-from physai_lint.checks._params import effective, interface, nodes_with_params
+from physai_lint.checks._params import declaration, effective, interface, nodes_with_params
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic
 from physai_lint.model.span import Span
@@ -157,14 +157,13 @@ def ambiguous_typing(ctx: CheckContext) -> Iterator[Diagnostic]:
             file_written = _file_written(ctx)
         written = _written(node)
         iface = interface(ctx, node)
-        decls = (iface.parameters or {}) if iface is not None else {}
         yield from _launch_nulls(node, seen)
         for name, ep in sorted(params.items()):
             how = None if ep.origin is None else written.get((ep.origin, name)) or file_written.get(ep.origin)
             if how is None or (ep.origin, name) in seen:
                 continue
             text, quoted, origin = how
-            decl = decls.get(name)
+            decl = declaration(iface, name, params) if iface is not None else None
             decl_type = None if decl is None or decl.dynamic_type else decl.type
             found = _problem(text, quoted, origin, ep.kind, ep.value, decl_type)
             if found is None:

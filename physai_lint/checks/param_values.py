@@ -6,7 +6,7 @@ from collections.abc import Iterator
 from typing import Any
 
 from physai_lint.checks._params import decl_source as _source
-from physai_lint.checks._params import effective, fully_known, interface, nodes_with_params
+from physai_lint.checks._params import declaration, effective, fully_known, interface, nodes_with_params
 from physai_lint.checks._util import CONTAINER_EXECUTABLES, did_you_mean, where
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic, Related
@@ -41,9 +41,10 @@ def _declared(ctx: CheckContext) -> Iterator[tuple[Any, Any, Any, Any]]:
     builtin = _builtin()
     for _, node in nodes_with_params(ctx):
         iface = interface(ctx, node)
-        declared = (iface.parameters if iface is not None else None) or {}
-        for name, ep in sorted(effective(ctx, node).items()):
-            decl = declared.get(name) or builtin.get(name)
+        params = effective(ctx, node)
+        for name, ep in sorted(params.items()):
+            decl = (declaration(iface, name, params) if iface is not None else None) \
+                or builtin.get(name)
             if decl is not None and ep.value is not None and ep.origin is not None:
                 yield node, ep, decl, iface
 
@@ -147,6 +148,8 @@ P109_IGNORE = ("use_sim_time", "qos_overrides.*")
 def undeclared(ctx: CheckContext) -> Iterator[Diagnostic]:
     from fnmatch import fnmatchcase
 
+    from physai_lint.interfaces.gpl import is_template
+
     seen: set[object] = set()
     ignore = tuple(ctx.option("P109", "ignore", P109_IGNORE))
     for _, node in nodes_with_params(ctx):
@@ -163,7 +166,7 @@ def undeclared(ctx: CheckContext) -> Iterator[Diagnostic]:
             if (ep.origin, name) in seen:
                 continue
             seen.add((ep.origin, name))
-            close = did_you_mean(name, iface.parameters or {})
+            close = did_you_mean(name, [n for n in iface.parameters or {} if not is_template(n)])
             hint = ("; did you mean " + " or ".join(f'"{c}"' for c in close) + "?") if close else ""
             yield Diagnostic(
                 "P109", ep.origin,

@@ -10,7 +10,9 @@ declared at run time). Validators: ``bounds<>``, ``gt<>``, ``gt_eq<>``, ``lt<>``
 """
 from __future__ import annotations
 
+import dataclasses
 import math
+from collections.abc import Callable
 from typing import Any
 
 import yaml
@@ -195,9 +197,12 @@ def _walk(node: yaml.MappingNode, prefix: str, path: str, decls: dict[str, Param
         if not isinstance(k, yaml.ScalarNode) or not isinstance(v, yaml.MappingNode):
             continue
         key = k.value
-        if key.startswith("__map_"):
+        if key.startswith(MAP_MARK):
             if prefix not in patterns:
                 patterns.append(prefix)
+            # the subtree is declared once per element of the string array it names: kept as
+            # templates ("gains.__map_joints.p") that mapped_declaration expands
+            _walk(v, f"{prefix}{key}.", path, decls, patterns, budget, depth + 1)
             continue
         name = f"{prefix}{key}"
         keys = {kk.value for kk, _ in v.value if isinstance(kk, yaml.ScalarNode)}
@@ -205,6 +210,39 @@ def _walk(node: yaml.MappingNode, prefix: str, path: str, decls: dict[str, Param
             decls[name] = _decl_from(name, v, path, budget, k)
         else:
             _walk(v, name + ".", path, decls, patterns, budget, depth + 1)
+
+
+MAP_MARK = "__map_"
+
+
+def is_template(name: str) -> bool:
+    """A declaration of a ``__map_`` subtree, not a parameter name."""
+    return MAP_MARK in name
+
+
+def mapped_declaration(decls: dict[str, ParamDecl], name: str,
+                       keys_of: Callable[[str], list[Any] | None]) -> ParamDecl | None:
+    """The ``__map_`` declaration ``name`` is an instance of: generate_parameter_library's
+    ParamListener declares ``gains.<j>.p`` for each element ``j`` of the string array ``joints``
+    (``gains.__map_joints.p``), with the template's type and validation. ``keys_of(param)`` is
+    that array's value for the node (None when unknown: then nothing is matched)."""
+    parts = name.split(".")
+    for template, decl in decls.items():
+        if MAP_MARK not in template:
+            continue
+        tparts = template.split(".")
+        if len(tparts) != len(parts):
+            continue
+        for t, part in zip(tparts, parts):
+            if t.startswith(MAP_MARK):
+                keys = keys_of(t[len(MAP_MARK):])
+                if keys is None or part not in keys:
+                    break
+            elif t != part:
+                break
+        else:
+            return dataclasses.replace(decl, name=name)
+    return None
 
 
 # ---- checking values against declarations -------------------------------------------------------

@@ -10,6 +10,7 @@ from physai_lint.interfaces import (
 )
 from physai_lint.interfaces.extract_cpp import extract_cpp, tokenize
 from physai_lint.interfaces.extract_py import extract_py
+from physai_lint.interfaces.gpl import mapped_declaration
 from physai_lint.interfaces.model import ParamDecl
 
 HERE = Path(__file__).parent
@@ -60,7 +61,7 @@ wheel_controller:
 def test_gpl_parse_and_validate():
     decls, patterns, diags = parse_gpl("/p.yaml", GPL)
     assert diags == []
-    assert set(decls) == {"joints", "rate", "speed", "mode", "gains", "pid.p"}
+    assert set(decls) == {"joints", "rate", "speed", "mode", "gains", "pid.p", "__map_joints.offset"}
     assert patterns == [""]
     assert decls["rate"].read_only and decls["rate"].type == "double"
     assert decls["rate"].span.line == 8
@@ -73,6 +74,17 @@ def test_gpl_parse_and_validate():
     assert validate(decls["joints"], ["a", "a"])
     assert len(validate(decls["gains"], [1.0, 20.0])) == 2
     assert validate(decls["gains"], [1.0, 2.0, 3.0]) == []
+
+
+def test_mapped_declarations_follow_the_array_they_name():
+    # ParamListener declares "<j>.offset" for each element j of joints, with the template's type
+    decls, _, _ = parse_gpl("/p.yaml", GPL)
+    keys = {"joints": ["elbow", "wrist"]}.get
+    decl = mapped_declaration(decls, "elbow.offset", keys)
+    assert decl is not None and decl.name == "elbow.offset" and decl.type == "double"
+    assert mapped_declaration(decls, "knee.offset", keys) is None  # not an element of joints
+    assert mapped_declaration(decls, "elbow.offset", lambda _: None) is None  # joints unknown
+    assert mapped_declaration(decls, "elbow.other", keys) is None
 
 
 def test_type_compatible():

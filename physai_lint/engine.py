@@ -223,12 +223,20 @@ def _param_sources(r: Any, composable_only: bool = False) -> set[str]:
     """Workspace parameter files that the nodes of a launch load (and that exist after install);
     ``composable_only``: those of its composable nodes, which launch_ros reads with PyYAML (rcl
     reads a node's through --params-file)."""
-    files = (getattr(s, "source", None) or getattr(s, "derived_from", None)  # RewrittenYaml: its source
-             for n in r.nodes if not composable_only or n.kind == "composable_node"
-             for s in n.param_sources if getattr(s, "status", None) == "ok"
-             # a file whose $(...) cannot all be performed here: still read, and its reads checked
-             or getattr(s, "derived_from", None) and getattr(s, "allow_substs", False))
-    return {f for f in files if f}
+    out: set[str] = set()
+    for n in r.nodes:
+        if composable_only and n.kind != "composable_node":
+            continue
+        for s in n.param_sources:
+            if composable_only and getattr(s, "origin", None) == "forwarded":
+                continue  # the container's file: rcl reads it for the component too
+            # a file whose $(...) cannot all be performed here is still read, and its reads checked
+            if getattr(s, "status", None) == "ok" or \
+                    getattr(s, "derived_from", None) and getattr(s, "allow_substs", False):
+                f = getattr(s, "source", None) or getattr(s, "derived_from", None)  # RewrittenYaml: its source
+                if f:
+                    out.add(f)
+    return out
 
 
 def _all_param_sources(launches: list[Any]) -> set[str]:

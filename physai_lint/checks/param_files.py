@@ -78,7 +78,7 @@ def no_match(ctx: CheckContext) -> Iterator[Diagnostic]:
             path = src.source if src.source in ctx.param_files else src.derived_from
             if path not in ctx.param_files:
                 continue
-            readers.setdefault(path, []).append(node)
+            readers.setdefault(path, []).append((node, src))
             if node.active is not False and src.source == path:
                 loaders.setdefault(path, []).append((node, src))
     for path, users in sorted(loaders.items()):
@@ -87,11 +87,18 @@ def no_match(ctx: CheckContext) -> Iterator[Diagnostic]:
             continue
         if any(n.fqn is None for n, _ in users):
             continue
-        keys = {id(n): matching_keys(n.fqn, model, n.kind == "composable_node") for n, _ in users}
+        keys = {id(n): matching_keys(n.fqn, model, _by_launch_ros(n, s)) for n, s in users}
         if not any(keys.values()):
             yield _whole_file(path, model, users)
-        elif all(n.fqn is not None for n in readers[path]):
+        elif all(n.fqn is not None for n, _ in readers[path]):
             yield from _stray_keys(path, model, users, keys, readers[path])
+
+
+def _by_launch_ros(node: Any, src: Any) -> bool:
+    """Whether launch_ros reads the file for the node (a component's own parameters: only "/**" and
+    its exact name match) rather than rcl (wildcard keys; a container's file a component gets
+    through forward_global_arguments)."""
+    return bool(node.kind == "composable_node" and src.origin != "forwarded")
 
 
 def _whole_file(path: str, model: Any, users: list[tuple[Any, Any]]) -> Diagnostic:
@@ -132,7 +139,7 @@ def _closest_pair(blocks: list[Any], users: list[tuple[Any, Any]]) -> tuple[Any,
 
 
 def _stray_keys(path: str, model: Any, users: list[tuple[Any, Any]], keys: dict[int, list[Any]],
-                readers: list[Any]) -> Iterator[Diagnostic]:
+                readers: list[tuple[Any, Any]]) -> Iterator[Diagnostic]:
     """Keys meant for a node that loads the file but gets none of its own parameters from it: the
     key names it with a typo, or without (or with another) namespace. A key for a node of another
     name is left alone: the file may be shared with nodes that launch files not checked here start.
@@ -141,8 +148,8 @@ def _stray_keys(path: str, model: Any, users: list[tuple[Any, Any]], keys: dict[
     from physai_lint.params.effective import matching_keys
     from physai_lint.params.match import explain_for, key_help
 
-    matched = {id(b) for n in readers
-               for b in keys.get(id(n)) or matching_keys(n.fqn, model, n.kind == "composable_node")}
+    matched = {id(b) for n, src in readers
+               for b in keys.get(id(n)) or matching_keys(n.fqn, model, _by_launch_ros(n, src))}
     # nodes that load the file and get no key of their own from it (wildcard keys aside)
     unserved: dict[str, tuple[Any, Any]] = {}
     for node, src in users:
@@ -192,7 +199,7 @@ def _read_by_components_only(ctx: CheckContext, flat_only: bool = True) -> set[s
     for _, node in all_nodes(ctx):
         for src in node.param_sources:
             if isinstance(src, ResolvedParamFile) and src.source in wanted:
-                kinds.setdefault(src.source, set()).add(node.kind == "composable_node")
+                kinds.setdefault(src.source, set()).add(_by_launch_ros(node, src))
     return {p for p, k in kinds.items() if k == {True}}
 
 

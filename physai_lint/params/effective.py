@@ -146,7 +146,7 @@ def effective_parameters(node_fqn: str | None, sources: list[ParamSourceR],
                          files: Mapping[str, ParamFileModel], composable: bool = False,
                          distro: str = "humble") -> dict[str, EffectiveParam]:
     if composable:
-        return _effective_composable(node_fqn, sources, files)
+        return _effective_composable(node_fqn, sources, files, distro)
     rcl = RclParams()
     uncertain = False
     for src in sources:
@@ -225,9 +225,21 @@ def _launch_kind(value: Any) -> str | None:
 
 
 def _effective_composable(fqn: str | None, sources: list[ParamSourceR],
-                          files: Mapping[str, ParamFileModel]) -> dict[str, EffectiveParam]:
+                          files: Mapping[str, ParamFileModel], distro: str = "humble"
+                          ) -> dict[str, EffectiveParam]:
     out: dict[str, EffectiveParam] = {}
     uncertain = False
+    # the container's command line, forwarded (forward_global_arguments): rcl reads it, and
+    # rclcpp resolves those global arguments before the load request's parameter overrides
+    forwarded = [s for s in sources if getattr(s, "origin", None) == "forwarded"]
+    if forwarded:
+        sources = [s for s in sources if getattr(s, "origin", None) != "forwarded"]
+        for name, ep in effective_parameters(fqn, forwarded, files, False, distro).items():
+            if ep.kind == "not_set" and ep.origin is None:
+                continue
+            out[name] = ep
+            if ep.kind is None:
+                ep.certain = False
 
     def put(name: str, value: Any, kind: str | None, span: Span | None, desc: str,
             key: str | None) -> None:
@@ -238,6 +250,7 @@ def _effective_composable(fqn: str | None, sources: list[ParamSourceR],
             ep.chain = [Blame(b.span, b.source_desc, b.value, True, b.kind, b.node_key)
                         for b in ep.chain]
             ep.value, ep.kind, ep.origin, ep.node_key = value, kind, span, key
+            ep.item_spans = None
         ep.chain.append(Blame(span, desc, value, False, kind, key))
         if kind is None:
             ep.certain = False

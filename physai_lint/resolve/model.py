@@ -45,7 +45,9 @@ class ResolvedParamFile:
     source: str | None
     status: Literal["ok", "missing", "not_installed", "unknown"]
     span: Span
-    origin: Literal["global", "node", "command_line"]  # command_line: --params-file in arguments
+    # command_line: --params-file in arguments; forwarded: the container's, which a component
+    # loaded with forward_global_arguments reads through rcl like its container
+    origin: Literal["global", "node", "command_line", "forwarded"]
     allow_substs: bool = False
     # A temporary file a substitution writes (nav2_common RewrittenYaml/ReplaceString): the model
     # rcl reads from it, positions mapped back to the source YAML; ``derived_from`` is that source.
@@ -79,7 +81,7 @@ class ResolvedParamDict:
 
     params: tuple[ResolvedParam, ...]
     span: Span
-    origin: Literal["global", "node"]
+    origin: Literal["global", "node", "forwarded"]
     key: str = "/**"
 
 

@@ -2,6 +2,7 @@
 ``load_composable_nodes.get_composable_node_load_request``)."""
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import TYPE_CHECKING, Any
 
 from physai_lint.model import launch as ir
@@ -373,12 +374,13 @@ class NodeBuilder:
         name, name_given = self._eval(cn.name, scope)
         ns_raw, ns_given = self._eval(cn.namespace, scope)
         namespace, specified = self._namespace(ns_raw, ns_given, scope)
+        # rclcpp_components loads a component with use_global_arguments(false): the container's own
+        # command line (-r __ns:=, --params-file) reaches it only with extra_arguments
+        # forward_global_arguments: true (component_manager.cpp :: create_node_options)
+        forward = self._forwards_global_arguments(cn, scope)
         if not specified:
-            # rclcpp_components loads a component with use_global_arguments(false): the container's
-            # own -r __ns:= reaches it only with extra_arguments forward_global_arguments: true
-            # (component_manager.cpp :: OnLoadNode / create_node_options); otherwise launch sends
-            # no namespace and the node gets its constructor's default, the root namespace.
-            forward = self._forwards_global_arguments(cn, scope)
+            # otherwise launch sends no namespace and the node gets its constructor's default, the
+            # root namespace
             if forward is None:  # unknown: known only when both ways give the root namespace
                 namespace = "/" if container_ns == "/" else None
             else:
@@ -389,7 +391,8 @@ class NodeBuilder:
         node_id = self._id()
         remaps, gparams = self._global_sources(scope, node_id, cn.span, cn.parameters,
                                                composable=True)
-        params = gparams + self._own_params(cn.parameters, scope, fqn or "/**")
+        params = self._forwarded(container_id, forward, cn.span) + gparams + \
+            self._own_params(cn.parameters, scope, fqn or "/**")
         inst_ = NodeInstance(
             id=node_id, kind="composable_node", package=package, executable=plugin, name=name,
             namespace=namespace, fqn=fqn, active=active, remaps=remaps + self._remaps(cn.remappings, scope),
@@ -402,6 +405,21 @@ class NodeBuilder:
         self._register(inst_, None, container_id)
         if container_id is not None:
             self.inst.add_edge(container_id, node_id, "container", cn.span, None)
+
+    def _forwarded(self, container_id: str | None, forward: bool | None, span: Span
+                   ) -> list[ParamSourceR]:
+        """The container's parameter sources a component reads with forward_global_arguments:
+        rclcpp resolves the context's global arguments (the container's --params-file and -p,
+        read by rcl) before the load request's parameters (``resolve_parameter_overrides``)."""
+        if container_id is None or forward is False:
+            return []
+        sources = self._node(container_id).param_sources
+        if not sources:
+            return []
+        if forward is None:
+            return [UnknownParams("the container's parameters, if forward_global_arguments is set", span)]
+        return [replace(s, origin="forwarded") if isinstance(s, (ResolvedParamFile, ResolvedParamDict))
+                else s for s in sources]
 
     def _forwards_global_arguments(self, cn: ir.ComposableNode, scope: Scope) -> bool | None:
         """extra_arguments forward_global_arguments (False when absent; None when unknown)."""

@@ -150,6 +150,7 @@ def _stray_keys(path: str, model: Any, users: list[tuple[Any, Any]], keys: dict[
 
     matched = {id(b) for n, src in readers
                for b in keys.get(id(n)) or matching_keys(n.fqn, model, _by_launch_ros(n, src))}
+    yield from _wildcards_for_components(path, model, users, matched)
     # nodes that load the file and get no key of their own from it (wildcard keys aside)
     unserved: dict[str, tuple[Any, Any]] = {}
     for node, src in users:
@@ -171,6 +172,31 @@ def _stray_keys(path: str, model: Any, users: list[tuple[Any, Any]], keys: dict[
             f'node key "{block.key}" of "{_rel(path)}" matches none of the nodes that load the file: '
             f"{explain_for(block.key, node)}; the parameters under it are silently ignored"
             f"{name_note((node,))}",
+            help=key_help(node, whole=False),
+            related=(Related(src.span, f"{where(node)} loads it here"),),
+            key=f"{_rel(path)}:{block.key}")
+
+
+def _wildcards_for_components(path: str, model: Any, users: list[tuple[Any, Any]],
+                              matched: set[int]) -> Iterator[Diagnostic]:
+    """A wildcard key (other than "/**") that rcl would match to a component loading the file, but
+    that no reader matches: launch_ros honours only "/**" and the exact name for a component's own
+    parameters (to_parameters_list), so the parameters under it never reach it."""
+    from physai_lint.params.match import explain_composable_no_match, key_help, key_matches
+
+    for block in model.blocks:
+        if id(block) in matched or "*" not in block.key or block.key.strip("/") == "**":
+            continue
+        hit = next(((n, src) for n, src in users if _by_launch_ros(n, src)
+                    and key_matches(block.key, n.fqn)), None)
+        if hit is None:
+            continue
+        node, src = hit
+        yield Diagnostic(
+            "P103", block.key_span,
+            f'node key "{block.key}" of "{_rel(path)}" matches none of the nodes that load the file: '
+            f"{explain_composable_no_match(block.key, node.fqn)}; the parameters under it are "
+            "silently ignored",
             help=key_help(node, whole=False),
             related=(Related(src.span, f"{where(node)} loads it here"),),
             key=f"{_rel(path)}:{block.key}")

@@ -215,9 +215,12 @@ class _Known:
     function the linter could not evaluate). Actions launch runs later (timers, event handlers)
     see none."""
 
-    def __init__(self, choices: dict[str, tuple[str, ...]], set_names: set[str] | None) -> None:
+    def __init__(self, choices: dict[str, tuple[str, ...]], set_names: set[str] | None,
+                 include_sets: Any = None) -> None:
         self.choices = {n: c for n, c in choices.items() if set_names is not None and n not in set_names}
         self.found: list[tuple[ir.Condition, str]] = []
+        # an include -> the names its file may set (None: any), when it was resolved
+        self.include_sets = include_sets or (lambda _a: None)
 
     def walk(self, actions: tuple[Any, ...], fixed: dict[str, tuple[str, Any]]) -> None:
         for a in actions:
@@ -244,7 +247,17 @@ class _Known:
                     fixed.clear()
                 else:
                     self.walk(a.actions, fixed)
-            elif isinstance(a, (ir.Include, ir.ResetLaunchConfigurations)):
+            elif isinstance(a, ir.Include):
+                fixed.clear()
+                # IncludeLaunchDescription.execute sets its arguments in the includer's scope
+                # before the file runs: they hold after it unless that file sets them again
+                sets = self.include_sets(a)
+                if sets is not None:
+                    for arg in a.arguments or ():
+                        text = literal_of(arg.value)
+                        if arg.name not in sets and text is not None:
+                            fixed[arg.name] = (text, arg.span)
+            elif isinstance(a, ir.ResetLaunchConfigurations):
                 fixed.clear()
 
     @staticmethod
@@ -291,12 +304,51 @@ def _conditions(a: Any) -> list[Any]:
     return [c for c in conds if isinstance(c, ir.Condition)]
 
 
+def _include_sets(ctx: CheckContext) -> Any:
+    """For an include the resolution followed, the launch configurations its file may set (what
+    leaks back into the includer); None when that is not known (the file includes others, runs a
+    function the linter cannot follow, or sets a name not known statically)."""
+    targets: dict[Any, str | None] = {}
+    for launch in ctx.launches:
+        for rec in launch.includes:
+            ok = rec.status == "ok" and rec.target_source in ctx.launch_files
+            if targets.setdefault(rec.span, rec.target_source if ok else None) != \
+                    (rec.target_source if ok else None):
+                targets[rec.span] = None  # reached with different targets: not one file
+    memo: dict[str, set[str] | None] = {}
+
+    def sets(a: ir.Include) -> set[str] | None:
+        target = targets.get(a.span)
+        if target is None:
+            return None
+        if target not in memo:
+            names: set[str] | None = set()
+            for b in _walk(ctx.launch_files[target].actions):
+                if isinstance(b, (ir.Include, ir.ResetLaunchConfigurations)) or \
+                        (isinstance(b, ir.OpaqueAction) and b.reason):
+                    names = None
+                    break
+                if isinstance(b, ir.SetLaunchConfiguration):
+                    name = literal_of(b.name)
+                    if name is None:
+                        names = None
+                        break
+                    names.add(name)
+                elif isinstance(b, ir.Group):
+                    names.update(k for k, _ in b.launch_configurations)
+            memo[target] = names
+        return memo[target]
+
+    return sets
+
+
 @rule("L108", "condition-never-true")
 def condition_never_true(ctx: CheckContext) -> Iterator[Diagnostic]:
     set_names = _set_names(ctx)
+    include_sets = _include_sets(ctx)
     for path in sorted(ctx.launch_files):
         lf = ctx.launch_files[path]
-        known = _Known(_choices(lf), set_names)
+        known = _Known(_choices(lf), set_names, include_sets)
         known.walk(lf.actions, {})
         found = known.found
         if set_names is not None:

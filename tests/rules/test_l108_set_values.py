@@ -1,7 +1,7 @@
 """L108 knows the values a <let> / SetLaunchConfiguration without a condition surely set before a
 condition, in execution order: not one set in a scoped group the condition is outside of, by a
-conditional <let>, before an include (whose arguments and configurations leak out), or read by an
-action launch runs later (a timer)."""
+conditional <let>, before an include (whose configurations leak out; its own arguments stay set),
+or read by an action launch runs later (a timer)."""
 from __future__ import annotations
 
 from typing import Any
@@ -72,3 +72,26 @@ def test_a_set_under_a_condition_anywhere_makes_the_value_unknown(demo_findings:
         "from launch.actions import LogInfo, OpaqueFunction, SetLaunchConfiguration\n"
         "from launch.conditions import IfCondition\nfrom launch.substitutions import LaunchConfiguration")
     assert demo_findings({"launch/a.launch.py": text}, "launch/a.launch.py", "L108") == []
+
+
+def test_an_include_argument_holds_in_the_includer_after_it(demo_findings: Any) -> None:
+    # IncludeLaunchDescription.execute sets its arguments in the includer's scope; the included
+    # file here sets "later" itself, so only "gui" stays known
+    xml = """<launch>
+  <arg name="gui" default="true" description="a"/>
+  <include file="$(find-pkg-share demo)/launch/other.launch.xml">
+    <arg name="gui" value="false"/>
+    <arg name="later" value="false"/>
+  </include>
+  <log message="a" if="$(var gui)"/>
+  <log message="b" if="$(var later)"/>
+</launch>
+"""
+    other = OTHER.replace("</launch>", '  <arg name="gui" default="true"/>\n  <log message="$(var gui)"/>\n</launch>')
+    files = {"launch/a.launch.xml": xml, "launch/other.launch.xml": other}
+    found = demo_findings(files, "launch/a.launch.xml", "L108")
+    assert [(line, 'is "false" here (set at line 4)' in msg) for line, msg in found] == [(7, True)]
+    # a file that includes others may set anything
+    nested = other.replace("</launch>", '  <include file="$(find-pkg-share demo)/launch/c.launch.xml"/>\n</launch>')
+    files = {**files, "launch/other.launch.xml": nested, "launch/c.launch.xml": "<launch/>\n"}
+    assert demo_findings(files, "launch/a.launch.xml", "L108") == []

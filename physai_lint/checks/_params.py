@@ -20,24 +20,34 @@ def effective(ctx: CheckContext, node: NodeInstance) -> dict[str, Any]:
     return cache[key]  # type: ignore[no-any-return]
 
 
-def declaration(iface: Any, name: str, params: dict[str, Any]) -> Any:
-    """The interface's declaration of parameter ``name`` for a node whose effective parameters are
-    ``params``: its own, or the generate_parameter_library ``__map_`` template it is an instance of
-    (the mapped array's value for this node, else its declared default, names the instances)."""
-    decls = iface.parameters or {}
-    decl = decls.get(name)
-    if decl is not None or not iface.parameter_patterns:
-        return decl
+def declarations(ctx: CheckContext, node: Any, iface: Any, params: dict[str, Any]) -> Any:
+    """A lookup ``name -> declaration`` for one node whose effective parameters are ``params``: the
+    interface's own, or the generate_parameter_library ``__map_`` template the name is an instance
+    of (the mapped array's value for this node names the instances; its declared default does only
+    when every parameter source of the node is known)."""
+    decls = (iface.parameters or {}) if iface is not None else {}
+    if iface is None or not iface.parameter_patterns:
+        return decls.get
     from physai_lint.interfaces.gpl import mapped_declaration
+
+    complete: list[bool] = []
 
     def keys_of(array: str) -> list[Any] | None:
         ep = params.get(array)
         if ep is not None:
             return ep.value if ep.certain and isinstance(ep.value, list) else None
         own = decls.get(array)
-        return own.default if own is not None and isinstance(own.default, list) else None
+        if own is None or not isinstance(own.default, list):
+            return None
+        if not complete:
+            complete.append(fully_known(ctx, node, params))
+        return own.default if complete[0] else None
 
-    return mapped_declaration(decls, name, keys_of)
+    def lookup(name: str) -> Any:
+        decl = decls.get(name)
+        return decl if decl is not None else mapped_declaration(decls, name, keys_of)
+
+    return lookup
 
 
 def fully_known(ctx: CheckContext, node: Any, params: dict[str, Any]) -> bool:

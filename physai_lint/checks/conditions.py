@@ -335,7 +335,11 @@ def _include_sets(ctx: CheckContext) -> Any:
                         break
                     names.add(name)
                 elif isinstance(b, ir.Group):
-                    names.update(k for k, _ in b.launch_configurations)
+                    group_names = [literal_of(k) for k, _ in b.launch_configurations]
+                    if None in group_names:
+                        names = None
+                        break
+                    names.update(n for n in group_names if n is not None)
             memo[target] = names
         return memo[target]
 

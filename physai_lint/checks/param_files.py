@@ -231,8 +231,7 @@ def _read_by_components_only(ctx: CheckContext, flat_only: bool = True) -> set[s
 
 def _launch_array_mix(model: Any, span: Any) -> set[str] | None:
     """The PyYAML types of the array an rcl P106 points into (its item at ``span``)."""
-    blocks = list(model.blocks) + ([model.flat] if model.flat is not None else [])
-    for block in blocks:
+    for block in model.blocks:
         for prm in block.params:
             if prm.item_spans and span in prm.item_spans and isinstance(prm.launch_value, list):
                 return {type(x).__name__ for x in prm.launch_value}

@@ -22,7 +22,7 @@ import re
 from collections.abc import Iterator
 from typing import Any
 
-from physai_lint.checks._params import declaration, effective, interface, nodes_with_params
+from physai_lint.checks._params import declarations, effective, interface, nodes_with_params
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic
 from physai_lint.model.span import Span
@@ -74,7 +74,7 @@ def _file_written(ctx: CheckContext) -> dict[Span, tuple[str, bool, str]]:
 
 
 def _add_launch_param(out: dict[tuple[Span, str], tuple[str, bool, str]], prm: ResolvedParam) -> None:
-    if prm.typed_by == "yaml" and prm.raw is not None:
+    if prm.typed_by in ("yaml", "rcl") and prm.raw is not None:
         out[(prm.span, prm.name)] = (prm.raw.strip(), False, "launch")
     elif prm.typed_by == "python" and isinstance(prm.value, str):
         out[(prm.span, prm.name)] = (prm.value, True, "python")
@@ -156,14 +156,14 @@ def ambiguous_typing(ctx: CheckContext) -> Iterator[Diagnostic]:
         if file_written is None:  # only runs that launch a node with parameters need it
             file_written = _file_written(ctx)
         written = _written(node)
-        iface = interface(ctx, node)
+        declared = declarations(ctx, node, interface(ctx, node), params)
         yield from _launch_nulls(node, seen)
         for name, ep in sorted(params.items()):
             how = None if ep.origin is None else written.get((ep.origin, name)) or file_written.get(ep.origin)
             if how is None or (ep.origin, name) in seen:
                 continue
             text, quoted, origin = how
-            decl = declaration(iface, name, params) if iface is not None else None
+            decl = declared(name)
             decl_type = None if decl is None or decl.dynamic_type else decl.type
             found = _problem(text, quoted, origin, ep.kind, ep.value, decl_type)
             if found is None:

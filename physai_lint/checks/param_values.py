@@ -6,7 +6,7 @@ from collections.abc import Iterator
 from typing import Any
 
 from physai_lint.checks._params import decl_source as _source
-from physai_lint.checks._params import declaration, effective, fully_known, interface, nodes_with_params
+from physai_lint.checks._params import declarations, effective, fully_known, interface, nodes_with_params
 from physai_lint.checks._util import CONTAINER_EXECUTABLES, did_you_mean, where
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic, Related
@@ -42,9 +42,9 @@ def _declared(ctx: CheckContext) -> Iterator[tuple[Any, Any, Any, Any]]:
     for _, node in nodes_with_params(ctx):
         iface = interface(ctx, node)
         params = effective(ctx, node)
+        declared = declarations(ctx, node, iface, params)
         for name, ep in sorted(params.items()):
-            decl = (declaration(iface, name, params) if iface is not None else None) \
-                or builtin.get(name)
+            decl = declared(name) or builtin.get(name)
             if decl is not None and ep.value is not None and ep.origin is not None:
                 yield node, ep, decl, iface
 

@@ -187,8 +187,8 @@ def _yaml_types(el: Element, accepted: frozenset[str]) -> Iterator[Diagnostic]:
     tag = el.tag
     for name, attr in el.attrs.items():
         if (tag, name) == ("param", "value"):
-            yield from _yaml_param_list(el, attr)
-            yield from _yaml_param_typed(el, attr)
+            typed = list(_yaml_param_typed(el, attr))
+            yield from typed or _yaml_param_list(el, attr)  # one finding for one TypeError
         if name not in accepted or (tag, name) in _ANY or name == "children":
             continue
         kind = _yaml_kind(attr)

@@ -338,7 +338,7 @@ class _Builder:
         if not attr.is_str and attr.typed is not None:
             return PLit(attr.typed, attr.value_span)  # type: ignore[arg-type]
         value = self.value_of(attr)
-        if self.fmt == "yaml" and sep is None and vtype in (None, "str", "yaml") \
+        if self.fmt == "yaml" and attr.is_str and sep is None and vtype in (None, "str", "yaml") \
                 and all(isinstance(p, Text) for p in value):
             # launch_yaml's get_attr does not convert, and parse_if_substitutions keeps a string
             # without substitutions as the str it is: value: "10" reaches the node as "10"

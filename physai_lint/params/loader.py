@@ -479,6 +479,8 @@ def load_param_file(path: str, text: str, distro: str = "humble") -> ParamFileMo
         p.model.ok = False
     finally:
         loader.dispose()
+    if p.seq_mixed is not None and not p.failed:  # rcl stopped at the mixed item, before the rest
+        _fail(p, p.seq_mixed)
     p.model.blocks = [b.freeze() for b in p.blocks]
     # rclcpp throws "No parameter value set" for a parameter that never got a value ([]).
     if p.model.ok and not p.failed and (p.maybe_unset or p.pending):

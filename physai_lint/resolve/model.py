@@ -69,7 +69,7 @@ class ResolvedParam:
     value: ParamValue
     span: Span
     raw: str | None = None
-    typed_by: Literal["python", "yaml", "forced"] = "python"
+    typed_by: Literal["python", "yaml", "forced", "rcl"] = "python"  # rcl: -p on the command line
     item_spans: tuple[Span, ...] | None = None  # per list item, when written as a literal list
 
 

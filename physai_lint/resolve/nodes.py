@@ -266,14 +266,18 @@ class NodeBuilder:
             at = span or where
             if flag == "--params-file":
                 out.append(self._file(text, at, "command_line", False, scope))
-            elif flag in ("-p", "--param") or (flag == "?" and (text is None or ":=" in text)):
+            elif flag == "?" and (text is None or ":=" in text):
+                # after an argument not known statically: perhaps -p, perhaps -r
+                out.append(UnknownParams("a command-line argument that may be -p", at))
+            elif flag in ("-p", "--param"):
                 if text is None:
                     out.append(UnknownParams("a command-line parameter with an unknown value", at))
                 elif ":=" in text:
                     prefix, name, raw = split_rule(text)
                     if name:
-                        out.append(ResolvedParamDict((_rcl_value_param(name, raw, at),), at, "node",
-                                                     prefix or "/**"))
+                        distro = getattr(self.inst.packages, "distro", "humble")
+                        out.append(ResolvedParamDict((_rcl_value_param(name, raw, at, distro),), at,
+                                                     "node", prefix or "/**"))
         return out
 
     @staticmethod
@@ -532,18 +536,20 @@ def _parameter_matters(lst: list[Any], i: int, own: set[str], leaks: dict[int, A
     return True
 
 
-def _rcl_value_param(name: str, text: str, span: Span) -> ResolvedParam:
+def _rcl_value_param(name: str, text: str, span: Span, distro: str) -> ResolvedParam:
     """``-p name:=text`` as ``rcl_parse_yaml_value`` reads it: the text is a YAML value (a flow
-    list is an array, a quoted text a string), typed by rcl's rules; None when rcl rejects it."""
+    list is an array, a quoted text a string), typed by rcl's rules; None when rcl rejects it (a
+    mapping is no value to it)."""
     from physai_lint.params.loader import load_param_file
 
     if "\n" in text or "\r" in text:
-        return ResolvedParam(name, None, span, text, "yaml")
-    model = load_param_file("<command line>", f"n:\n  ros__parameters:\n    p: {text}\n")
+        return ResolvedParam(name, None, span, text, "rcl")
+    model = load_param_file("<command line>", f"n:\n  ros__parameters:\n    p: {text}\n", distro)
     value = None
-    if model.ok and model.blocks and len(model.blocks[0].params) == 1:
+    if model.ok and model.blocks and len(model.blocks[0].params) == 1 \
+            and model.blocks[0].params[0].name == "p":
         value = model.blocks[0].params[0].value
-    return ResolvedParam(name, value, span, text, "yaml")
+    return ResolvedParam(name, value, span, text, "rcl")
 
 
 def _cli_typed(rp: ResolvedParam) -> ResolvedParam:

@@ -263,3 +263,19 @@ def test_yaml_parameter_value_of_another_type(param: str, type_: str) -> None:
 def test_yaml_parameter_value_of_its_type(param: str) -> None:
     text = f"launch:\n- node:\n    pkg: p\n    exec: e\n    param:\n    - {param}\n"
     assert found(text) == []
+
+
+def test_a_list_of_another_type_than_its_type_is_one_finding() -> None:
+    text = ("launch:\n- node:\n    pkg: p\n    exec: e\n    param:\n"
+            "    - {name: q, value: [1, 2.0], type: list_of_float}\n")
+    assert [(c, k) for c, _, k in found_all(text)] == [("L010", "param:q:type:list_of_float")]
+
+
+def test_yaml_null_value_is_not_a_string() -> None:
+    # launch_yaml's get_attr rejects None ("expected to be of type 'None', got NoneType")
+    from physai_lint.model.values import PLit
+
+    launch = ir_of("launch:\n- node:\n    pkg: p\n    exec: e\n    param:\n    - {name: q, value: ~}\n")
+    node = launch.actions[0]
+    value = node.parameters[0].entries[0].value  # type: ignore[attr-defined]
+    assert not (isinstance(value, PLit) and value.value == "~")

@@ -102,3 +102,11 @@ def test_launch_value():
 def test_a_repeated_node_key_is_kept_apart_rcl_merges_it():
     m = load("/**:\n  ros__parameters:\n    a: 1\n/**:\n  ros__parameters:\n    b: 2\n")
     assert codes(m) == [] and [(d.code, d.span.line) for d in m.merged_keys] == [("X006", 4)]
+
+
+def test_a_mixed_array_is_reported_before_a_later_syntax_error() -> None:
+    # rcl stops at the mixed item, before the text breaks off
+    from physai_lint.params.loader import load_param_file
+
+    model = load_param_file("/p.yaml", "n:\n  ros__parameters:\n    a: [1, \"x\", 3\n")
+    assert sorted(d.code for d in model.diagnostics) == ["P106", "X001"]

@@ -96,3 +96,19 @@ def test_a_missing_params_file_on_the_command_line_stops_the_node(demo_findings:
     found = demo_findings({"launch/a.launch.py": launch}, "launch/a.launch.py", "P101")
     assert len(found) == 1
     assert "exits at start-up with \"Couldn't parse params file" in found[0][1]
+
+
+@pytest.mark.parametrize("how", [
+    "ros_arguments=['-p', 'publish_frequency:={a: 1}']",  # a mapping is no value to rcl
+    "ros_arguments=[LaunchConfiguration('flag'), 'publish_frequency:=10']",  # -p or -r: unknown
+])
+def test_values_rcl_would_not_read_as_given_are_unknown(demo_findings: Any, how: str) -> None:
+    launch = PY.format(how=how).replace(
+        "from launch_ros.actions import Node\n",
+        "from launch.substitutions import LaunchConfiguration\nfrom launch_ros.actions import Node\n")
+    assert _p105(demo_findings, {"launch/a.launch.py": launch}, "launch/a.launch.py") == []
+
+
+def test_a_null_on_the_command_line_is_a_string_to_rcl(demo_findings: Any) -> None:
+    how = "ros_arguments=['-p', 'frame_prefix:=null']"
+    assert demo_findings({"launch/a.launch.py": PY.format(how=how)}, "launch/a.launch.py", "P112") == []

@@ -53,3 +53,14 @@ def test_the_instances_follow_the_default_of_the_array(demo_findings: Any) -> No
     params = "pid:\n  ros__parameters:\n    gains:\n      shoulder: {i: 1}\n      elbow: {i: 1}\n"
     # joints defaults to [shoulder]: only gains.shoulder.i is declared, an int for a double
     assert _findings(demo_findings, params, "P105") == [4]
+
+
+def test_the_default_of_the_array_counts_only_when_every_source_is_known(demo_findings: Any) -> None:
+    # a parameter file not known here may set joints: the instances are then unknown
+    launch = LAUNCH.replace("parameters=[params]", "parameters=[params, LaunchConfiguration('extra')]").replace(
+        "from launch.substitutions import PathJoinSubstitution",
+        "from launch.substitutions import LaunchConfiguration, PathJoinSubstitution")
+    files = {"CMakeLists.txt": CMAKE, "src/pid_parameters.yaml": GPL, "src/pid.cpp": CPP,
+             "launch/a.launch.py": launch,
+             "config/pid.yaml": "pid:\n  ros__parameters:\n    gains:\n      shoulder: {i: 1}\n"}
+    assert demo_findings(files, "launch/a.launch.py", "P105") == []

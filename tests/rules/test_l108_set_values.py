@@ -95,3 +95,20 @@ def test_an_include_argument_holds_in_the_includer_after_it(demo_findings: Any) 
     nested = other.replace("</launch>", '  <include file="$(find-pkg-share demo)/launch/c.launch.xml"/>\n</launch>')
     files = {**files, "launch/other.launch.xml": nested, "launch/c.launch.xml": "<launch/>\n"}
     assert demo_findings(files, "launch/a.launch.xml", "L108") == []
+
+
+def test_an_unscoped_group_in_the_included_file_may_set_the_argument(demo_findings: Any) -> None:
+    xml = """<launch>
+  <include file="$(find-pkg-share demo)/launch/other.launch.xml">
+    <arg name="gui" value="false"/>
+  </include>
+  <log message="a" if="$(var gui)"/>
+</launch>
+"""
+    other = ("from launch import LaunchDescription\nfrom launch.actions import GroupAction\n\n\n"
+             "def generate_launch_description():\n"
+             "    return LaunchDescription([GroupAction([], scoped=False,\n"
+             "                                          launch_configurations={'gui': 'true'})])\n")
+    xml = xml.replace("other.launch.xml", "other.launch.py")
+    files = {"launch/a.launch.xml": xml, "launch/other.launch.py": other}
+    assert demo_findings(files, "launch/a.launch.xml", "L108") == []

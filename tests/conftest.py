@@ -74,3 +74,37 @@ def demo_findings(tmp_path: Path, demo_package: Callable[[dict[str, str]], Path]
         return sorted((f.span.line, f.message) for f in run_check(opts).findings if f.code == code)
 
     return check
+
+
+COMPONENT_LAUNCH = """from launch import LaunchDescription
+from launch.substitutions import PathJoinSubstitution
+from launch_ros.actions import ComposableNodeContainer, Node
+from launch_ros.descriptions import ComposableNode
+from launch_ros.substitutions import FindPackageShare
+
+
+def generate_launch_description():
+    params = PathJoinSubstitution([FindPackageShare('demo'), 'config', 'cam.yaml'])
+    return LaunchDescription([
+        ComposableNodeContainer(
+            name='container', namespace='{namespace}', package='rclcpp_components',
+            executable='component_container'{container},
+            composable_node_descriptions=[
+                ComposableNode({component}),
+            ]),{after}
+    ])
+"""
+
+
+@pytest.fixture
+def component_launch() -> Callable[..., str]:
+    """``component_launch(component, namespace='', container='', after='')``: a ``.launch.py`` starting
+    ``/<namespace>/container`` with one ``ComposableNode(<component>)``; ``params`` names the demo
+    package's installed ``config/cam.yaml``, ``container`` adds keyword arguments to the container
+    (", parameters=[params]") and ``after`` actions after it."""
+
+    def text(component: str, namespace: str = "", container: str = "", after: str = "") -> str:
+        return COMPONENT_LAUNCH.format(component=component, namespace=namespace, container=container,
+                                       after=after)
+
+    return text

@@ -28,8 +28,9 @@ def declarations(ctx: CheckContext, node: Any, iface: Any, params: dict[str, Any
     decls = (iface.parameters or {}) if iface is not None else {}
     if iface is None or not iface.parameter_patterns:
         return decls.get
-    from physai_lint.interfaces.gpl import mapped_declaration
+    from physai_lint.interfaces.gpl import is_template, mapped_declaration
 
+    templates = {n: d for n, d in decls.items() if is_template(n)}
     complete: list[bool] = []
 
     def keys_of(array: str) -> list[Any] | None:
@@ -45,7 +46,7 @@ def declarations(ctx: CheckContext, node: Any, iface: Any, params: dict[str, Any
 
     def lookup(name: str) -> Any:
         decl = decls.get(name)
-        return decl if decl is not None else mapped_declaration(decls, name, keys_of)
+        return decl if decl is not None else mapped_declaration(templates, name, keys_of)
 
     return lookup
 

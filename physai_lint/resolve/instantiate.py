@@ -244,8 +244,10 @@ class Instantiator:
         elif isinstance(a, ir.SetParameter):
             # SetParameter.execute evaluates the value then, not when a node reads the list
             name = self.ev.eval(a.name, scope)
-            typed = self.nodes.global_parameter(name, a.value, scope, a.span) if name is not None else None
-            self._append_global(scope, PARAMS, ("param", name, typed, a.span), a.span, f'parameter "{name}"')
+            typed, cli = self.nodes.global_parameter(name, a.value, scope, a.span) if name is not None \
+                else (None, None)
+            self._append_global(scope, PARAMS, ("param", name, typed, a.span, cli), a.span,
+                                f'parameter "{name}"')
         elif isinstance(a, ir.SetParametersFromFile):
             self._append_global(scope, PARAMS, ("file", self.ev.eval(a.path, scope), a.path, a.span),
                                 a.span, "parameter file")

@@ -33,19 +33,19 @@ _REMAP_FLAGS = frozenset({"-r", "--remap"})
 
 
 def command_line_values(arguments: Any, ros_arguments: Any
-                        ) -> list[tuple[str, str | None, Any, Span | None]]:
+                        ) -> list[tuple[str, str | None, Span | None]]:
     """What rcl reads from a node's command line (``rcl_parse_arguments``), in order: (flag, text,
-    value, span) for the value after each flag of a ``--ros-args`` section that takes one (``-r``,
+    span) for the value after each flag of a ``--ros-args`` section that takes one (``-r``,
     ``-p``, ``--params-file``...; ``?`` after an unknown argument, which may be any of them), and
     ("", text, ...) for a bare ``from:=to`` outside one (the deprecated remap form rcl still
     reads). ``arguments`` and ``ros_arguments`` are (text or None, value) pairs; launch_ros puts
     ``--ros-args`` before ``ros_arguments``."""
-    out: list[tuple[str, str | None, Any, Span | None]] = []
+    out: list[tuple[str, str | None, Span | None]] = []
     for section, start_in_ros in ((arguments, False), (ros_arguments, True)):
         in_ros, pending = start_in_ros, None
         for text, value in section:
             if pending is not None:
-                out.append((pending, text, value, v.span_of(value)))
+                out.append((pending, text, v.span_of(value)))
                 pending = None
                 continue
             if text is None:
@@ -56,7 +56,7 @@ def command_line_values(arguments: Any, ros_arguments: Any
                 if text == "--ros-args":
                     in_ros = True
                 elif ":=" in text:
-                    out.append(("", text, value, v.span_of(value)))
+                    out.append(("", text, v.span_of(value)))
                 continue
             if text == "--":
                 in_ros = False
@@ -71,8 +71,13 @@ def command_line_rules(arguments: Any, ros_arguments: Any
     ``--ros-args`` section, and a bare ``from:=to`` outside one. Each rule comes with its span and
     whether it is in a ``--ros-args`` section (where rcl refuses a rule it cannot parse; outside,
     such a text is not a rule). A rule whose text is unknown is None: it may match anything."""
+    return _rules(command_line_values(arguments, ros_arguments))
+
+
+def _rules(values: list[tuple[str, str | None, Span | None]]
+           ) -> list[tuple[str | None, Span | None, bool]]:
     out: list[tuple[str | None, Span | None, bool]] = []
-    for flag, text, _, span in command_line_values(arguments, ros_arguments):
+    for flag, text, span in values:
         if flag in _REMAP_FLAGS or flag == "?":
             if text is None or ":=" in text:
                 out.append((text, span, True))
@@ -145,9 +150,12 @@ class NodeBuilder:
             return loc.source, "missing"  # a directory is not a parameter file
         return loc.source, loc.status
 
-    def global_parameter(self, name: str, pvalue: v.PValue, scope: Scope, span: Span) -> ResolvedParam:
-        """A ``SetParameter``'s value as ``SetParameter.execute`` evaluates it."""
-        return resolve_pvalue(name, pvalue, lambda x: self.inst.ev.eval(x, scope), span)
+    def global_parameter(self, name: str, pvalue: v.PValue, scope: Scope, span: Span
+                         ) -> tuple[ResolvedParam, ResolvedParam]:
+        """A ``SetParameter``'s value as ``SetParameter.execute`` evaluates it (what a component's
+        load request carries), and as a process gets it, through ``-p name:=text``."""
+        rp = resolve_pvalue(name, pvalue, lambda x: self.inst.ev.eval(x, scope), span)
+        return rp, _cli_typed(rp)
 
     def _global_sources(self, scope: Scope, node_id: str, node_span: Span,
                         own: tuple[ir.ParamSource, ...], composable: bool = False
@@ -165,12 +173,11 @@ class NodeBuilder:
         param_list = scope.configs.get(PARAMS) or []
         for item in param_list:
             if item[0] == "param":
-                _, name, rp, span = item
+                _, name, rp, span, cli = item
                 if name is None:
                     params.append(UnknownParams("SetParameter with an unknown name", span))
                 else:
-                    params.append(ResolvedParamDict((rp if composable else _cli_typed(rp),),
-                                                    span, "global", "/**"))
+                    params.append(ResolvedParamDict((rp if composable else cli,), span, "global", "/**"))
             else:
                 _, path, _, span = item
                 params.append(self._file(path, span, "global", False, scope))
@@ -255,14 +262,14 @@ class NodeBuilder:
             out.append(EffRemap(src, dst, r.span, "node", prefix))
         return out
 
-    def _command_line_params(self, arguments: Any, ros_arguments: Any, where: Span, scope: Scope
-                             ) -> list[ParamSourceR]:
+    def _command_line_params(self, values: list[tuple[str, str | None, Span | None]], where: Span,
+                             scope: Scope) -> list[ParamSourceR]:
         """The parameters a node's own command line gives it: ``-p [node:]name:=value`` (typed by
         rcl's YAML value parser, under node key ``/**`` or ``node``) and ``--params-file path``.
         launch_ros puts them before its own ``--ros-args`` section, so every SetParameter and
         ``parameters=`` entry overrides them (rcl merges all in command-line order)."""
         out: list[ParamSourceR] = []
-        for flag, text, _, span in command_line_values(arguments, ros_arguments):
+        for flag, text, span in values:
             at = span or where
             if flag == "--params-file":
                 out.append(self._file(text, at, "command_line", False, scope))
@@ -281,9 +288,10 @@ class NodeBuilder:
         return out
 
     @staticmethod
-    def _command_line_remaps(arguments: Any, ros_arguments: Any, where: Span) -> list[EffRemap]:
+    def _command_line_remaps(values: list[tuple[str, str | None, Span | None]], where: Span
+                             ) -> list[EffRemap]:
         out = []
-        for text, span, in_ros in command_line_rules(arguments, ros_arguments):
+        for text, span, in_ros in _rules(values):
             if text is None:
                 out.append(EffRemap(None, None, span or where, "node"))
                 continue
@@ -325,16 +333,16 @@ class NodeBuilder:
         ros_args = tuple(self.inst.ev.eval(x, scope) for x in (a.ros_arguments or ()))
         # The user's rules come first on the command line: rcl applies the first that matches, so
         # they win over launch's -r __node:=/__ns: (name=, namespace=), SetRemap and remappings=.
-        cl_remaps = self._command_line_remaps(
-            zip(args, a.arguments or ()), zip(ros_args, a.ros_arguments or ()), a.span)
+        command_line = command_line_values(zip(args, a.arguments or ()),
+                                           zip(ros_args, a.ros_arguments or ()))
+        cl_remaps = self._command_line_remaps(command_line, a.span)
         renamed = next((r for r in cl_remaps if r.src in ("__node", "__name") and r.node_prefix is None), None)
         if renamed is not None and renamed.dst is not None:
             name, name_given = renamed.dst, True
         moved = next((r for r in cl_remaps if r.src == "__ns" and r.node_prefix is None), None)
         if moved is not None and moved.dst is not None:
             ns_raw, ns_given = moved.dst, True
-        cl_params = self._command_line_params(
-            zip(args, a.arguments or ()), zip(ros_args, a.ros_arguments or ()), a.span, scope)
+        cl_params = self._command_line_params(command_line, a.span, scope)
         own_remaps = self._remaps(a.remappings, scope)
         keyed = name_given  # launch_ros keys a parameter dict by name= alone (node.py)
         if not name_given:

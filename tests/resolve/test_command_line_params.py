@@ -22,6 +22,14 @@ def generate_launch_description():
 """
 
 
+def _with_imports(launch: str) -> str:
+    """``launch`` importing the substitutions the ``how`` of a test may use."""
+    return launch.replace(
+        "from launch_ros.actions import Node\n",
+        "from launch.substitutions import LaunchConfiguration, PathJoinSubstitution\n"
+        "from launch_ros.actions import Node\nfrom launch_ros.substitutions import FindPackageShare\n")
+
+
 def _p105(demo_findings: Any, files: dict[str, str], entry: str) -> list[tuple[int, str]]:
     return [(line, msg.split(" is declared")[0]) for line, msg in
             demo_findings(files, entry, "P105")]
@@ -64,10 +72,7 @@ def test_a_later_double_under_the_same_key_does_not_replace_the_integer(demo_fin
 def test_a_params_file_in_arguments_is_read_by_rcl(demo_findings: Any) -> None:
     how = ("arguments=['--ros-args', '--params-file', "
            "PathJoinSubstitution([FindPackageShare('demo'), 'config', 'rsp.yaml'])]")
-    launch = PY.format(how=how).replace(
-        "from launch_ros.actions import Node\n",
-        "from launch.substitutions import PathJoinSubstitution\nfrom launch_ros.actions import Node\n"
-        "from launch_ros.substitutions import FindPackageShare\n")
+    launch = _with_imports(PY.format(how=how))
     files = {"launch/a.launch.py": launch,
              "config/rsp.yaml": "rsp:\n  ros__parameters:\n    publish_frequency: 10\n"}
     found = demo_findings(files, "launch/a.launch.py", "P105")
@@ -89,10 +94,7 @@ def test_a_missing_params_file_on_the_command_line_stops_the_node(demo_findings:
     # launch_ros drops with a warning
     how = ("ros_arguments=['--params-file', "
            "PathJoinSubstitution([FindPackageShare('demo'), 'config', 'none.yaml'])]")
-    launch = PY.format(how=how).replace(
-        "from launch_ros.actions import Node\n",
-        "from launch.substitutions import PathJoinSubstitution\nfrom launch_ros.actions import Node\n"
-        "from launch_ros.substitutions import FindPackageShare\n")
+    launch = _with_imports(PY.format(how=how))
     found = demo_findings({"launch/a.launch.py": launch}, "launch/a.launch.py", "P101")
     assert len(found) == 1
     assert "exits at start-up with \"Couldn't parse params file" in found[0][1]
@@ -103,9 +105,7 @@ def test_a_missing_params_file_on_the_command_line_stops_the_node(demo_findings:
     "ros_arguments=[LaunchConfiguration('flag'), 'publish_frequency:=10']",  # -p or -r: unknown
 ])
 def test_values_rcl_would_not_read_as_given_are_unknown(demo_findings: Any, how: str) -> None:
-    launch = PY.format(how=how).replace(
-        "from launch_ros.actions import Node\n",
-        "from launch.substitutions import LaunchConfiguration\nfrom launch_ros.actions import Node\n")
+    launch = _with_imports(PY.format(how=how))
     assert _p105(demo_findings, {"launch/a.launch.py": launch}, "launch/a.launch.py") == []
 
 

@@ -5,32 +5,16 @@ from __future__ import annotations
 
 from typing import Any
 
-LAUNCH = """from launch import LaunchDescription
-from launch.substitutions import PathJoinSubstitution
-from launch_ros.actions import ComposableNodeContainer
-from launch_ros.descriptions import ComposableNode
-from launch_ros.substitutions import FindPackageShare
+CAMERA = ("package='image_proc', plugin='image_proc::RectifyNode', name='camera', namespace='front', "
+          "parameters=[params]")
 
 
-def generate_launch_description():
-    params = PathJoinSubstitution([FindPackageShare('demo'), 'config', 'cam.yaml'])
-    return LaunchDescription([
-        ComposableNodeContainer(
-            name='container', namespace='front', package='rclcpp_components',
-            executable='component_container',
-            composable_node_descriptions=[
-                ComposableNode(package='image_proc', plugin='image_proc::RectifyNode',
-                               name='camera', namespace='front', parameters=[params]),
-            ]),
-    ])
-"""
-
-
-def test_a_wildcard_key_beside_the_exact_one_is_ignored(demo_findings: Any) -> None:
+def test_a_wildcard_key_beside_the_exact_one_is_ignored(demo_findings: Any, component_launch: Any) -> None:
     params = ("front/camera:\n  ros__parameters:\n    a: 1\n"
               "/**/camera:\n  ros__parameters:\n    b: 2\n"
               "/**:\n  ros__parameters:\n    c: 3\n"
               "/other/*:\n  ros__parameters:\n    d: 4\n")
-    found = demo_findings({"launch/a.launch.py": LAUNCH, "config/cam.yaml": params},
+    launch = component_launch(CAMERA, namespace="front")
+    found = demo_findings({"launch/a.launch.py": launch, "config/cam.yaml": params},
                           "launch/a.launch.py", "P103")
     assert [(line, "is ignored for composable nodes" in message) for line, message in found] == [(4, True)]

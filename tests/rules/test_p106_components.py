@@ -5,27 +5,10 @@ any other mix fails evaluate_parameter_dict's uniform-type check. Checked with l
 0.19.8's to_parameters_list on the same file."""
 from __future__ import annotations
 
-LAUNCH = """from launch import LaunchDescription
-from launch.substitutions import PathJoinSubstitution
-from launch_ros.actions import ComposableNodeContainer, Node
-from launch_ros.descriptions import ComposableNode
-from launch_ros.substitutions import FindPackageShare
-
-
-def generate_launch_description():
-    params = PathJoinSubstitution([FindPackageShare('demo'), 'config', 'cam.yaml'])
-    return LaunchDescription([
-        ComposableNodeContainer(
-            name='container', namespace='', package='rclcpp_components',
-            executable='component_container',
-            composable_node_descriptions=[
-                ComposableNode(package='image_proc', plugin='image_proc::RectifyNode',
-                               name='cam', parameters=[params]),
-            ]),
-    ])
-"""
-BOTH = LAUNCH.replace("    ])\n", "        Node(package='demo_nodes_cpp', executable='talker', name='cam2',\n"
-                      "             parameters=[params]),\n    ])\n")
+CAM = "package='image_proc', plugin='image_proc::RectifyNode', name='cam', parameters=[params]"
+# a plain node loading the same file: rcl reads it
+TALKER = ("\n        Node(package='demo_nodes_cpp', executable='talker', name='cam2',\n"
+          "             parameters=[params]),")
 
 
 def _p106(demo_findings, launch: str, values: str) -> list[tuple[int, str]]:
@@ -34,19 +17,19 @@ def _p106(demo_findings, launch: str, values: str) -> list[tuple[int, str]]:
     return demo_findings(files, "launch/a.launch.py", "P106")
 
 
-def test_ints_with_floats_are_a_double_array_for_a_component(demo_findings):
-    assert _p106(demo_findings, LAUNCH, "[0, 0, 640.0, 480.0]") == []
+def test_ints_with_floats_are_a_double_array_for_a_component(demo_findings, component_launch):
+    assert _p106(demo_findings, component_launch(CAM), "[0, 0, 640.0, 480.0]") == []
 
 
-def test_other_mixes_fail_in_launch_ros(demo_findings):
-    found = _p106(demo_findings, LAUNCH, '[0, "a", 480.0]')
+def test_other_mixes_fail_in_launch_ros(demo_findings, component_launch):
+    found = _p106(demo_findings, component_launch(CAM), '[0, "a", 480.0]')
     assert [line for line, _ in found] == [3]
     assert "launch_ros fails loading them with TypeError" in found[0][1]
     assert "rcl:" not in found[0][1]
-    assert [line for line, _ in _p106(demo_findings, LAUNCH, "[true, 1]")] == [3]
+    assert [line for line, _ in _p106(demo_findings, component_launch(CAM), "[true, 1]")] == [3]
 
 
-def test_a_file_a_plain_node_loads_is_read_by_rcl(demo_findings):
-    found = _p106(demo_findings, BOTH, "[0, 0, 640.0, 480.0]")
+def test_a_file_a_plain_node_loads_is_read_by_rcl(demo_findings, component_launch):
+    found = _p106(demo_findings, component_launch(CAM, after=TALKER), "[0, 0, 640.0, 480.0]")
     assert [line for line, _ in found] == [3]
     assert "rcl: \"Sequence should be of same type" in found[0][1]

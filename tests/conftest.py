@@ -64,13 +64,15 @@ def demo_graph(tmp_path: Path, demo_package: Callable[[dict[str, str]], Path]
 
 @pytest.fixture
 def demo_findings(tmp_path: Path, demo_package: Callable[[dict[str, str]], Path]
-                  ) -> Callable[[dict[str, str], str, str], list[tuple[int, str]]]:
-    """``demo_findings(files, entry, code)``: (line, message) of the ``code`` findings, sorted, of
-    checking ``src/demo/<entry>`` in a workspace holding only the demo package with ``files``."""
+                  ) -> Callable[..., list[tuple[int, str]]]:
+    """``demo_findings(files, entry, code, distro="humble")``: (line, message) of the ``code``
+    findings, sorted, of checking ``src/demo/<entry>`` in a workspace holding only the demo package
+    with ``files``."""
     from physai_lint.engine import CheckOptions, run_check
 
-    def check(files: dict[str, str], entry: str, code: str) -> list[tuple[int, str]]:
-        opts = CheckOptions(paths=[str(demo_package(files) / entry)], workspace=str(tmp_path), cache=False)
+    def check(files: dict[str, str], entry: str, code: str, distro: str = "humble") -> list[tuple[int, str]]:
+        opts = CheckOptions(paths=[str(demo_package(files) / entry)], workspace=str(tmp_path), cache=False,
+                            distro=distro)
         return sorted((f.span.line, f.message) for f in run_check(opts).findings if f.code == code)
 
     return check

@@ -300,7 +300,7 @@ def _set(fixed: dict[str, tuple[str, Any]], name: Any, value: Any, span: Any) ->
 def _conditions(a: Any) -> list[Any]:
     conds = [getattr(a, "condition", None)]
     if isinstance(a, ir.NodeAction):
-        conds += [c.condition for c in a.composable_nodes]
+        conds += [x for c in a.composable_nodes for x in (c.branch, c.condition)]
     return [c for c in conds if isinstance(c, ir.Condition)]
 
 

@@ -1,5 +1,6 @@
 """Scope traps of real launch (SEMANTICS §1): L109 invalid-condition-value, L110 timer-loses-scope,
-L111 scoped-group-leak, L112 dirname-after-include, L113 set-use-sim-time-no-effect."""
+L111 scoped-group-leak, L112 dirname-after-include, L113 set-use-sim-time-no-effect,
+L115 component-condition-ignored."""
 from __future__ import annotations
 
 from collections.abc import Iterator
@@ -123,3 +124,24 @@ def set_use_sim_time_no_effect(ctx: CheckContext) -> Iterator[Diagnostic]:
                      '<set_parameter name="use_sim_time" value="true"/>, or pass use_sim_time in '
                      "each node's parameters",
                 key="use_sim_time")
+
+
+@rule("L115", "component-condition-ignored")
+def component_condition_ignored(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for launch in ctx.launches:
+        for span, raw, fqn in launch.ignored_conditions:
+            if span in seen:
+                continue
+            seen.add(span)
+            who = f'component "{fqn}"' if fqn else "this component"
+            what = f"the condition {raw}" if raw else "the condition"
+            yield Diagnostic(
+                "L115", span,
+                f"{what} of {who} is never evaluated on {ctx.distro}: "
+                "LoadComposableNodes loads every composable node description it is given, so the "
+                "component is loaded whatever the condition says",
+                help="put the condition on the LoadComposableNodes / <load_composable_node> (one "
+                     "per condition), or list the component in its container's "
+                     "composable_node_descriptions, where humble does evaluate it",
+                key=raw or "condition")

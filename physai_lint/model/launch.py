@@ -175,8 +175,11 @@ class ComposableNode:
     remappings: tuple[Remapping, ...]
     extra_arguments: tuple[tuple[str, Value, Span], ...]
     span: Span
-    condition: Condition | None = None
+    condition: Condition | None = None  # the one launch_ros is given (condition= / if= / unless=)
     id: str = ""
+    # Python: the undecided ``if`` branches the description was made under (it is in the list
+    # only when they hold), apart from ``condition``: humble's LoadComposableNodes ignores that one
+    branch: Condition | None = None
 
 
 @dataclass(frozen=True, slots=True)

@@ -225,6 +225,9 @@ class LaunchResult:
     dirname_traps: list[tuple[Span, str, str]] = field(default_factory=list)
     # Start delay of nodes started by timers (node id -> seconds, None when unknown)
     delays: dict[str, float | None] = field(default_factory=dict)
+    # Conditions of components that humble's LoadComposableNodes never evaluates (the component is
+    # loaded anyway): (the condition's span, how it is written, the component's name or None)
+    ignored_conditions: list[tuple[Span, str, str | None]] = field(default_factory=list)
     # Conditions that can never be true (or never false): (span, explanation)
     dead_conditions: list[tuple[Span, str]] = field(default_factory=list)
     # Parts that may read any launch configuration (a parameter file with allow_substs whose

@@ -373,14 +373,23 @@ class NodeBuilder:
             self.component(cn, scope, inst_.fqn, inst_.id, inst_.namespace, inst_.action_id)
 
     def component(self, cn: ir.ComposableNode, scope: Scope, container: str | None,
-                  container_id: str | None, container_ns: str | None, key: str) -> None:
+                  container_id: str | None, container_ns: str | None, key: str,
+                  honours_condition: bool = True) -> None:
+        """``honours_condition``: False where launch_ros never evaluates the description's
+        condition (humble's LoadComposableNodes: the component is loaded whatever it says)."""
         fr = self.inst.frame
         active = fr.active
-        if cn.condition is not None:
+        ignored = cn.condition is not None and not honours_condition
+        for c in (cn.branch, cn.condition):
+            if c is None:
+                continue
             from physai_lint.resolve.instantiate import combine
 
-            cond = self.inst.ev.condition(cn.condition.kind, cn.condition.value, scope)
-            active = combine(active, cond)
+            # evaluated even where launch_ros ignores it: what it reads stays read (no L102 on
+            # top of L115), and it is how the file means to be run once the condition is moved
+            cond = self.inst.ev.condition(c.kind, c.value, scope)
+            if c is cn.branch or not ignored:
+                active = combine(active, cond)
         package, package_from_config = self.inst.ev.eval_noting_configs(cn.package, scope)
         plugin, _ = self._eval(cn.plugin, scope)
         name, name_given = self._eval(cn.name, scope)
@@ -413,6 +422,8 @@ class NodeBuilder:
             name_explicit=name_given, namespace_explicit=specified, container=container,
             container_id=container_id, package_from_config=package_from_config,
         )
+        if ignored and active is not False:
+            self.inst.result.ignored_conditions.append((cn.condition.span, cn.condition.raw, fqn))  # type: ignore[union-attr]
         # loaded when the action loading it runs: after the timer or the event that runs that
         self._register(inst_, None, container_id)
         if container_id is not None:
@@ -461,9 +472,13 @@ class NodeBuilder:
                 for n in self.inst.result.nodes:
                     if n.kind == "container" and n.fqn == container:
                         container_id, container_ns = n.id, n.namespace
+        # humble's LoadComposableNodes.execute loads every description, never asking its condition
+        # (ComposableNodeContainer.execute filters its own by theirs); iron and later ask
+        # (ros2/launch_ros#339, load_composable_nodes.py :: get_composable_node_load_request)
+        honours = getattr(self.inst.packages, "distro", "humble") != "humble"
         for cn in a.nodes:
             self.component(cn, scope, container, container_id, container_ns,
-                           f"{self.inst.frame.file}#{a.id}")
+                           f"{self.inst.frame.file}#{a.id}", honours)
 
     def process(self, a: ir.ExecuteProcess, scope: Scope) -> None:
         fr = self.inst.frame

@@ -202,7 +202,8 @@ def test_object_made_in_both_branches_keeps_each_under_its_branch():
     # each action under its branch's condition, as if it had been returned from there
     assert [(g.condition.kind, lit(g.actions[0].executable)) for g in (stereo, mono)] == \
         [("if", "stereo"), ("unless", "mono")]
-    assert [(lit(c.plugin), c.condition.kind) for c in load.nodes] == [("p::Stereo", "if"), ("p::Mono", "unless")]
+    assert [(lit(c.plugin), c.branch.kind, c.condition) for c in load.nodes] == \
+        [("p::Stereo", "if", None), ("p::Mono", "unless", None)]
 
 
 def test_object_made_before_the_branch_stays_unknown():

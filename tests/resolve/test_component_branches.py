@@ -43,12 +43,12 @@ def generate_launch_description():
 """
 
 
-def _components(tmp_path, demo_package, **args):
+def _components(tmp_path, demo_package, distro="humble", **args):
     from physai_lint import api
     from physai_lint.engine import CheckOptions
 
     path = str(demo_package({"launch/a.launch.py": LAUNCH}) / "launch/a.launch.py")
-    opts = CheckOptions(paths=[path], launch_args=args, workspace=str(tmp_path))
+    opts = CheckOptions(paths=[path], launch_args=args, workspace=str(tmp_path), distro=distro)
     nodes = json.loads(api.graph(opts, path, "json"))["nodes"]  # two are named "filter"
     return sorted((n["executable"], n["active"]) for n in nodes if n["kind"] == "composable_node")
 
@@ -58,9 +58,11 @@ def test_only_the_selected_branch_is_loaded(tmp_path, demo_package):
     # not taken makes no component at all; the one on the environment stays undecided
     assert _components(tmp_path, demo_package) == [("demo::Compare", True), ("demo::Env", "unknown")]
     assert _components(tmp_path, demo_package, mode="plain") == [("demo::Env", "unknown"), ("demo::Plain", True)]
-    # the component's own condition still applies
-    assert _components(tmp_path, demo_package, mode="plain", plain="false") == [
+    # the component's own condition applies from iron on; humble's LoadComposableNodes ignores it
+    assert _components(tmp_path, demo_package, "jazzy", mode="plain", plain="false") == [
         ("demo::Env", "unknown"), ("demo::Plain", False)]
+    assert _components(tmp_path, demo_package, mode="plain", plain="false") == [
+        ("demo::Env", "unknown"), ("demo::Plain", True)]
 
 
 def test_no_duplicate_component_across_exclusive_branches(tmp_path, demo_package):
@@ -69,3 +71,6 @@ def test_no_duplicate_component_across_exclusive_branches(tmp_path, demo_package
     path = str(demo_package({"launch/a.launch.py": LAUNCH}) / "launch/a.launch.py")
     codes = {f.code for f in run_check(CheckOptions(paths=[path], workspace=str(tmp_path))).findings}
     assert "N107" not in codes and "L102" not in codes
+    # the Python if a description was made under is no condition launch_ros is given: humble's
+    # LoadComposableNodes ignoring conditions (L115) does not make it loaded
+    assert "L115" not in codes

@@ -438,17 +438,17 @@ class ActionBuilder:
                 opt_value(c, -1, "package"), opt_value(c, -1, "plugin"), opt_value(c, -1, "name"),
                 opt_value(c, -1, "namespace"), to_params(c.kwargs.get("parameters"), c.arg_span(-1, "parameters")),
                 self._remaps(c.kwargs.get("remappings"), c.arg_span(-1, "remappings"), "ComposableNode"), tuple(extra),
-                c.span,
-                self._branch_condition(c, to_condition(c.kwargs.get("condition"), c.span), added),
-                self.id_of(c)))
+                c.span, to_condition(c.kwargs.get("condition"), c.span), self.id_of(c),
+                self._branch_condition(c, None, added)))
         return tuple(out)
 
     def _branch_condition(self, obj: LObj, own: L.Condition | None, added: list[CondTag] | None = None
                           ) -> L.Condition | None:
         """A description (not an action, so no Group can carry it) made under an ``if`` the
-        evaluator could not decide, or ``added`` to a list under one, gets that ``if`` as its own
-        condition, and-ed with the one it was given: otherwise both branches of
-        ``if mode == "a": ... else: ...`` load their components."""
+        evaluator could not decide, or ``added`` to a list under one, gets that ``if`` as a
+        condition, and-ed with ``own``: otherwise both branches of ``if mode == "a": ... else: ...``
+        load their components. (A ComposableNode keeps the branches apart from the condition it
+        was given, ``ComposableNode.branch``: humble's LoadComposableNodes ignores only that one.)"""
         tags = self._new_tags(obj) + [t for t in added or () if t not in obj.tags and t not in self.applied]
         conds = [t.condition or L.Condition("if", (Unknown(t.reason, obj.span),), obj.span, "if ...")
                  for t in tags]

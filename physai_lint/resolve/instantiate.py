@@ -95,7 +95,8 @@ class Instantiator:
         self.result: LaunchResult
         self.frame: Frame
         self.budget = MAX_ACTIONS
-        self.deferred: list[tuple[tuple[ir.Action, ...], dict[str, Any], Frame]] = []
+        # actions run later: (actions, locals, frame, the TimerAction whose period is performed first)
+        self.deferred: list[tuple[tuple[ir.Action, ...], dict[str, Any], Frame, ir.Timer | None]] = []
         self.handlers: list[tuple[ir.EventHandler, Frame, dict[str, Any]]] = []
         # id(global list) -> (the scoped-group depth it was created at, the action that created it)
         self.list_origin: dict[int, tuple[int, Span]] = {}
@@ -430,7 +431,18 @@ class Instantiator:
 
     # ---- deferred: timers and event handlers -----------------------------------------------------
     def _timer(self, a: ir.Timer, scope: Scope) -> None:
-        text = self.ev.eval(a.period, scope)
+        # TimerAction.execute only schedules _wait_to_fire_event, which performs the period when
+        # the loop next runs: after the whole description was visited, so with the launch
+        # configurations (and locals) left at the top, not this scope's (a group around it has
+        # popped its own by then). Its actions run later still (_run_deferred).
+        lost = self._scope_losses(scope)
+        fr = replace(self.frame, deferred="timer", lost=tuple(lost), trigger=list(self.frame.trigger))
+        self.deferred.append((a.actions, dict(scope.locals), fr, a))
+
+    def _timer_fires(self, a: ir.Timer, top: Scope) -> Frame:
+        """The period of timer ``a`` (``self.frame`` is the timer's), performed as
+        ``_wait_to_fire_event`` does; the frame its actions run in."""
+        text = self.ev.eval(a.period, top)
         period: float | None = None
         if text is not None:
             try:
@@ -438,11 +450,9 @@ class Instantiator:
             except ValueError:
                 period = None
         self.result.timers.append((a.span, period, text if text is not None else "unknown"))
-        lost = self._scope_losses(scope)
-        delay = None if period is None or self.frame.delay is None else self.frame.delay + period
-        fr = replace(self.frame, deferred="timer", delay=delay, lost=tuple(lost),
-                     trigger=list(self.frame.trigger))
-        self.deferred.append((a.actions, dict(scope.locals), fr))
+        fr = self.frame
+        delay = None if period is None or fr.delay is None else fr.delay + period
+        return replace(fr, delay=delay)
 
     def _scope_losses(self, scope: Scope) -> tuple[str, ...]:
         """What actions deferred from here lose: they run with the top-level configurations."""
@@ -466,11 +476,13 @@ class Instantiator:
             for h, fr, locals_ in handlers:
                 self._handler(h, fr, locals_, top)
             deferred, self.deferred = self.deferred, []
-            for actions, locals_, fr in deferred:
+            for actions, locals_, fr, timer in deferred:
                 scope = Scope(configs=top.configs, locals=locals_)
                 outer = self.frame
                 self.frame = fr
                 try:
+                    if timer is not None:
+                        self.frame = self._timer_fires(timer, top)
                     self._walk(actions, scope)
                 finally:
                     self.frame = outer
@@ -484,7 +496,7 @@ class Instantiator:
         self.nodes.watch(h, key, fr)
         self.deferred.append((h.actions, locals_,
                               replace(fr, deferred=h.event, trigger=trigger,
-                                      active=fr.active if h.event != "on_shutdown" else None)))
+                                      active=fr.active if h.event != "on_shutdown" else None), None))
 
     def add_edge(self, before: str, after: str, reason: str, span: Span, delay: float | None) -> None:
         self.result.edges.append(StartEdge(before, after, reason, span, delay))

@@ -42,3 +42,53 @@ def test_the_root_namespace_is_nothing_to_lose(demo_findings):
 def test_a_node_that_names_the_namespace_itself_loses_nothing(demo_findings):
     # create3_sim: "Namespace is not pushed when used in EventHandler", so the node passes it
     assert _l110(demo_findings, "robot1", own_namespace=True) == []
+
+
+# TimerAction.execute only schedules _wait_to_fire_event, which performs the period once the whole
+# description has been visited: with the launch configurations left at the top by then.
+FLEET = """<launch>
+  <group>
+    <include file="$(dirname)/robot.launch.xml"/>
+  </group>
+</launch>
+"""
+
+ROBOT = """<launch>
+  <arg name="delay" default="4.0"/>
+  <timer period="$(var delay)">
+    <node pkg="rviz2" exec="rviz2" name="rviz"/>
+  </timer>
+</launch>
+"""
+
+LATE = """<launch>
+  <timer period="$(var delay)">
+    <node pkg="rviz2" exec="rviz2" name="rviz"/>
+  </timer>
+  <arg name="delay" default="4.0"/>
+</launch>
+"""
+
+
+def test_a_timer_period_read_in_a_group_is_performed_after_the_group(demo_findings):
+    files = {"launch/fleet.launch.xml": FLEET, "launch/robot.launch.xml": ROBOT}
+    (found,) = demo_findings(files, "launch/fleet.launch.xml", "L101")
+    assert found[0] == 3 and 'launch configuration "delay" is read but never declared' in found[1]
+    # the same file launched alone keeps its argument at the top: nothing to report
+    assert demo_findings(files, "launch/robot.launch.xml", "L101") == []
+
+
+def test_a_timer_period_may_read_an_argument_declared_after_the_timer(demo_findings):
+    assert demo_findings({"launch/a.launch.xml": LATE}, "launch/a.launch.xml", "L101") == []
+
+
+def test_the_period_still_delays_the_timer_actions(tmp_path, demo_package):
+    import json
+
+    from physai_lint import api
+    from physai_lint.engine import CheckOptions
+
+    path = str(demo_package({"launch/a.launch.xml": LATE}) / "launch/a.launch.xml")
+    opts = CheckOptions(paths=[path], launch_args={"delay": "2.5"}, workspace=str(tmp_path))
+    nodes = json.loads(api.plan(opts, path, "json"))["vertices"]
+    assert [(n["fqn"], n["delay"]) for n in nodes] == [("/rviz", 2.5)]

@@ -18,6 +18,17 @@ def startup_cycle(ctx: CheckContext) -> Iterator[Diagnostic]:
 
     seen: set[object] = set()
     for launch in ctx.launches:
+        for span, text, steps, others in launch.trigger_cycles:
+            if (span, text) in seen:
+                continue
+            seen.add((span, text))
+            yield Diagnostic(
+                "S101", span,
+                f"startup cycle {text}: {steps}; each only runs from another's event handler, so "
+                "none of them ever starts",
+                help="add one of them to the launch description directly (it is the root of the chain)",
+                related=tuple(Related(s, "handler in the cycle") for s in others),
+                key=text)
         if not launch.edges:
             continue
         plan = startup_cycles(launch, lambda n: effective(ctx, n))

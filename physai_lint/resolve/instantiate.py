@@ -107,6 +107,11 @@ class Instantiator:
         self.ev.on_dirname = self._on_dirname
         self.nodes = NodeBuilder(self)
         self.visited: dict[str, bool | None] = {}
+        # Which actions start: those visited outside any event handler (``free``), and, for those
+        # visited only in handlers' actions, the targets each visit waits for (``triggered``: key
+        # -> (the action, [target keys of one visit, ...])); ``NodeBuilder.finish`` closes it.
+        self.free: set[str] = set()
+        self.triggered: dict[str, tuple[ir.Action, list[tuple[tuple[str, str, Span], ...]]]] = {}
         # the files in which an action or include the linter cannot follow ran: it may have
         # declared or set any launch configuration their later reads ask for (includes and opaque
         # functions do not scope them). Reads in other files stay checked: in a large system
@@ -206,6 +211,11 @@ class Instantiator:
         prev = self.visited.get(key, False)
         self.visited[key] = True if (prev is True or self.frame.active is True) else (
             None if (prev is None or self.frame.active is None) else False)
+        if self.frame.active is not False:
+            if not self.frame.trigger:
+                self.free.add(key)
+            elif key not in self.free:
+                self.triggered.setdefault(key, (a, []))[1].append(tuple(self.frame.trigger))
         try:
             if self.frame.active is False and outer.active is not False:
                 # Skipped by real launch: walk a throwaway copy so its nodes show as inactive.

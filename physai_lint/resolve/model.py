@@ -198,6 +198,10 @@ class LaunchResult:
     set_remaps: list[tuple[Span, str | None, str | None, list[str]]] = field(default_factory=list)
     # Actions waiting on an event that can never come: (span, description)
     never_started: list[tuple[Span, str]] = field(default_factory=list)
+    # Event handlers waiting on each other through an action that is no node (a TimerAction, a
+    # GroupAction...), which the plan's node cycles cannot show: (the first handler's span, the
+    # cycle as text, its steps as text, the other handlers' spans)
+    trigger_cycles: list[tuple[Span, str, str, tuple[Span, ...]]] = field(default_factory=list)
     # Timers: (span, period seconds or None when unknown, raw period text)
     timers: list[tuple[Span, float | None, str]] = field(default_factory=list)
     # Packages referenced by FindPackageShare/$(find-pkg-share)/get_package_share_directory/...:

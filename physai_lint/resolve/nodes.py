@@ -522,6 +522,85 @@ class NodeBuilder:
             else:
                 continue
             res.never_started.append((h.span, f"the target action of its {_EVENT_CLASS.get(h.event, h.event)} is {why}"))
+        if self.inst.triggered and not opaque_files:
+            self._trigger_cycles()
+
+    def _trigger_cycles(self) -> None:
+        """``LaunchResult.trigger_cycles``: actions visited only in event handlers' actions whose
+        targets, through an action that is no node, wait for each other. (The resolver walks a
+        handler's actions as if its event came; a cycle of nodes alone is the plan's.)"""
+        from physai_lint.resolve.roots import nodes_on_cycles
+
+        inst = self.inst
+        started = set(inst.free)
+        waiting = dict(inst.triggered)
+        changed = True
+        while changed:  # an action starts once every target of one of its visits has
+            changed = False
+            for key, (_, visits) in list(waiting.items()):
+                if key in started or any(all(t[0] in started for t in visit) for visit in visits):
+                    started.add(key)
+                    del waiting[key]
+                    changed = True
+        graph: dict[str, dict[str, tuple[str, Span]]] = {}
+        for key, (_, visits) in waiting.items():
+            for visit in visits:
+                for tkey, event, span in visit:
+                    if tkey in waiting:
+                        graph.setdefault(key, {}).setdefault(tkey, (event, span))
+        on_cycles = nodes_on_cycles({k: set(v) for k, v in graph.items()})
+        done: set[str] = set()
+        for key in sorted(on_cycles):
+            if key in done or key in self.by_action:
+                continue  # a cycle is reported from its first member that is no node
+            path = _cycle_through(key, graph, on_cycles)
+            if path is None:
+                continue
+            done.update(path)
+            steps, spans = [], []
+            for a, b in zip(path, path[1:] + path[:1]):
+                event, span = graph[a][b]
+                steps.append(f"{self._label(a)} waits for {_VERB.get(event, event)} of {self._label(b)}")
+                spans.append(span)
+            text = " -> ".join(self._label(k) for k in [*path, path[0]])
+            order = sorted(set(spans), key=lambda s: (s.file, s.line, s.col))
+            inst.result.trigger_cycles.append((order[0], text, ", ".join(steps), tuple(order[1:])))
+
+    def _label(self, key: str) -> str:
+        """An action of a trigger cycle, for messages: a node by its name, else its class and line."""
+        ids = self.by_action.get(key)
+        if ids:
+            n = self._node(ids[0])
+            return f'"{n.fqn or n.executable or n.package}"'
+        a = self.inst.triggered[key][0]
+        return f"{_ACTION_CLASS.get(type(a).__name__, type(a).__name__)} (line {a.span.line})"
+
+
+_VERB = {"on_process_start": "the start", "on_process_exit": "the exit",
+         "on_execution_complete": "the completion", "on_state_transition": "a state transition"}
+_ACTION_CLASS = {"Timer": "TimerAction", "Group": "GroupAction", "Include": "IncludeLaunchDescription",
+                 "NodeAction": "Node", "EventHandler": "RegisterEventHandler",
+                 "OpaqueAction": "OpaqueFunction"}
+
+
+def _cycle_through(key: str, graph: dict[str, dict[str, Any]], members: set[str]) -> list[str] | None:
+    """A shortest cycle from ``key`` back to it along ``graph`` (breadth first, targets sorted)."""
+    parent: dict[str, str] = {}
+    frontier = [key]
+    while frontier:
+        nxt = []
+        for k in frontier:
+            for t in sorted(graph.get(k, ())):
+                if t == key:
+                    path = [k]
+                    while path[-1] != key:
+                        path.append(parent[path[-1]])
+                    return path[::-1]
+                if t in members and t not in parent:
+                    parent[t] = k
+                    nxt.append(t)
+        frontier = nxt
+    return None
 
 
 # The handler classes behind ``EventHandler.event`` (launch.event_handlers, launch_ros's

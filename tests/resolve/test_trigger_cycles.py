@@ -1,0 +1,67 @@
+"""S101 through an action that is no node: the resolver walks an event handler's actions as if its
+event came, so a TimerAction started only when a node starts, whose completion alone starts that
+node, looked started; the plan's cycles are of nodes only. Such a cycle is found from which actions
+start at all: those visited outside any handler, then those whose targets start."""
+HEAD = """from launch import LaunchDescription
+from launch.actions import GroupAction, RegisterEventHandler, TimerAction
+from launch.event_handlers import OnExecutionComplete, OnProcessStart
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    move_group = Node(package='moveit_ros_move_group', executable='move_group')
+    spawner = Node(package='controller_manager', executable='spawner', arguments=['arm'])
+    delayed = TimerAction(period=3.0, actions=[spawner])
+"""
+
+CYCLE = HEAD + """    return LaunchDescription([
+        RegisterEventHandler(OnProcessStart(target_action=move_group, on_start=[delayed])),
+        RegisterEventHandler(OnExecutionComplete(target_action=delayed, on_completion=[move_group])),
+    ])
+"""
+
+ROOTED = HEAD + """    return LaunchDescription([
+        delayed,
+        RegisterEventHandler(OnExecutionComplete(target_action=delayed, on_completion=[move_group])),
+    ])
+"""
+
+CHAIN = HEAD + """    return LaunchDescription([
+        move_group,
+        RegisterEventHandler(OnProcessStart(target_action=move_group, on_start=[delayed])),
+        RegisterEventHandler(OnExecutionComplete(target_action=delayed, on_completion=[
+            Node(package='rviz2', executable='rviz2')])),
+    ])
+"""
+
+GROUPED = HEAD + """    group = GroupAction([spawner])
+    return LaunchDescription([
+        RegisterEventHandler(OnProcessStart(target_action=move_group, on_start=[group])),
+        RegisterEventHandler(OnExecutionComplete(target_action=group, on_completion=[move_group])),
+    ])
+"""
+
+
+def _s101(demo_findings, text: str) -> list[tuple[int, str]]:
+    return demo_findings({"launch/a.launch.py": text}, "launch/a.launch.py", "S101")
+
+
+def test_a_timer_and_a_node_waiting_for_each_other_never_start(demo_findings):
+    assert _s101(demo_findings, CYCLE) == [(12, (
+        'startup cycle TimerAction (line 10) -> "move_group" -> TimerAction (line 10): TimerAction '
+        '(line 10) waits for the start of "move_group", "move_group" waits for the completion of '
+        "TimerAction (line 10); each only runs from another's event handler, so none of them ever "
+        "starts"))]
+
+
+def test_a_group_in_the_cycle_is_named_too(demo_findings):
+    ((line, message),) = _s101(demo_findings, GROUPED)
+    assert line == 13 and message.startswith('startup cycle GroupAction (line 11) -> "move_group"')
+
+
+def test_a_timer_in_the_description_is_the_root(demo_findings):
+    assert _s101(demo_findings, ROOTED) == []
+
+
+def test_a_chain_from_a_started_node_is_no_cycle(demo_findings):
+    assert _s101(demo_findings, CHAIN) == []

@@ -7,6 +7,7 @@ from collections.abc import Iterator
 from physai_lint.checks._params import effective
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic, Related
+from physai_lint.resolve.nodes import LATE_COMPLETION
 
 _VERB = {"on_process_start": "start", "on_process_exit": "exit", "on_execution_complete": "completion",
          "on_state_transition": "a state transition"}
@@ -66,10 +67,12 @@ def handler_never_fires(ctx: CheckContext) -> Iterator[Diagnostic]:
             if span in seen:
                 continue
             seen.add(span)
+            help = "register the handler before its target action (put the RegisterEventHandler " \
+                   "first in the launch description)" if why == LATE_COMPLETION else \
+                "add the target action to the launch description, or register the handler under " \
+                "the same condition as its target"
             yield Diagnostic("S102", span, f"this event handler never fires: {why}, so its actions never run",
-                             help="add the target action to the launch description, or register the "
-                                  "handler under the same condition as its target",
-                             key=why)
+                             help=help, key=why)
 
 
 @rule("S103", "invalid-timer-period")

@@ -111,6 +111,9 @@ class Instantiator:
         # visited only in handlers' actions, the targets each visit waits for (``triggered``: key
         # -> (the action, [target keys of one visit, ...])); ``NodeBuilder.finish`` closes it.
         self.free: set[str] = set()
+        # OnExecutionComplete handlers registered after their target was visited: target key ->
+        # the handlers (emptied when the target is visited again)
+        self.late_handlers: dict[str, list[ir.EventHandler]] = {}
         self.triggered: dict[str, tuple[ir.Action, list[tuple[tuple[str, str, Span], ...]]]] = {}
         # the files in which an action or include the linter cannot follow ran: it may have
         # declared or set any launch configuration their later reads ask for (includes and opaque
@@ -211,6 +214,8 @@ class Instantiator:
         prev = self.visited.get(key, False)
         self.visited[key] = True if (prev is True or self.frame.active is True) else (
             None if (prev is None or self.frame.active is None) else False)
+        if self.late_handlers and key in self.late_handlers:
+            del self.late_handlers[key]  # visited again: now with the handler registered
         if self.frame.active is not False:
             if not self.frame.trigger:
                 self.free.add(key)
@@ -276,6 +281,12 @@ class Instantiator:
         elif isinstance(a, ir.EventHandler):
             fr = replace(self.frame, lost=self._scope_losses(scope))
             self.handlers.append((a, fr, dict(scope.locals)))
+            if a.event == "on_execution_complete" and a.target_id and fr.active is not False:
+                # Action.visit arranges ExecutionComplete only if a handler for it is registered
+                # by then: a target already visited (and not visited again) never emits it
+                target = f"{fr.file}#{a.target_id}"
+                if self.visited.get(target, False) is not False:
+                    self.late_handlers.setdefault(target, []).append(a)
         elif isinstance(a, ir.OpaqueAction):
             if (a.reason and a.other or a.again) and self.specialize is not None \
                     and self.specialized < MAX_SPECIALIZED:

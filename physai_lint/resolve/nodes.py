@@ -522,6 +522,9 @@ class NodeBuilder:
             else:
                 continue
             res.never_started.append((h.span, f"the target action of its {_EVENT_CLASS.get(h.event, h.event)} is {why}"))
+        for late in self.inst.late_handlers.values():
+            for h in late:
+                res.never_started.append((h.span, LATE_COMPLETION))
         if self.inst.triggered and not opaque_files:
             self._trigger_cycles()
 
@@ -576,6 +579,11 @@ class NodeBuilder:
         return f"{_ACTION_CLASS.get(type(a).__name__, type(a).__name__)} (line {a.span.line})"
 
 
+# Why an OnExecutionComplete handler registered after its target never fires (checks/startup.py
+# gives it its own help).
+LATE_COMPLETION = ("its target action was already run when the handler was registered, and launch "
+                   "only emits ExecutionComplete for an action visited while a handler for it exists "
+                   "(Action.visit)")
 _VERB = {"on_process_start": "the start", "on_process_exit": "the exit",
          "on_execution_complete": "the completion", "on_state_transition": "a state transition"}
 _ACTION_CLASS = {"Timer": "TimerAction", "Group": "GroupAction", "Include": "IncludeLaunchDescription",

@@ -1,0 +1,40 @@
+"""S102 for an OnExecutionComplete handler registered after its target ran: Action.visit arranges
+ExecutionComplete only if a handler for it is registered when the action is visited
+(context.would_handle_event), so a handler added later never fires. OnProcessStart/OnProcessExit
+events come later (from the process), so their order does not matter."""
+LAUNCH = """from launch import LaunchDescription
+from launch.actions import ExecuteProcess, RegisterEventHandler
+from launch.event_handlers import {event}
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    can_up = ExecuteProcess(cmd=['ip', 'link', 'set', 'can0', 'up'])
+    driver = Node(package='demo', executable='driver')
+    handler = RegisterEventHandler({event}(target_action=can_up, {kw}=[driver]))
+    return LaunchDescription([{order}])
+"""
+
+
+def _s102(demo_findings, event: str, kw: str, order: str) -> list[tuple[int, str]]:
+    text = LAUNCH.format(event=event, kw=kw, order=order)
+    return demo_findings({"launch/a.launch.py": text}, "launch/a.launch.py", "S102")
+
+
+def test_a_completion_handler_after_its_target_never_fires(demo_findings):
+    assert _s102(demo_findings, "OnExecutionComplete", "on_completion", "can_up, handler") == [(10, (
+        "this event handler never fires: its target action was already run when the handler was "
+        "registered, and launch only emits ExecutionComplete for an action visited while a handler "
+        "for it exists (Action.visit), so its actions never run"))]
+
+
+def test_a_completion_handler_before_its_target_fires(demo_findings):
+    assert _s102(demo_findings, "OnExecutionComplete", "on_completion", "handler, can_up") == []
+
+
+def test_a_target_run_again_after_the_handler_fires_it(demo_findings):
+    assert _s102(demo_findings, "OnExecutionComplete", "on_completion", "can_up, handler, can_up") == []
+
+
+def test_process_events_do_not_depend_on_the_order(demo_findings):
+    assert _s102(demo_findings, "OnProcessExit", "on_exit", "can_up, handler") == []

@@ -187,6 +187,22 @@ def _is_container(node: NodeInstance) -> bool:
 def container_not_launched(ctx: CheckContext) -> Iterator[Diagnostic]:
     seen: set[object] = set()
     for launch in ctx.launches:
+        for span, line, why in launch.early_loads:
+            if span in seen:
+                continue
+            seen.add(span)
+            target = f"the ComposableNodeContainer action at line {line}, which" if line is not None \
+                else "a ComposableNodeContainer action that"
+            yield Diagnostic(
+                "S203", span,
+                f"LoadComposableNodes targets {target} {why}: "
+                "LoadComposableNodes.execute reads the container's node_name before it has executed "
+                "and raises RuntimeError(\"cannot access 'node_name' before executing action\"), "
+                "which ends the launch",
+                help="add the container to the launch description before the LoadComposableNodes "
+                     "(in the same event handler, if it is started from one), or give "
+                     "target_container the container's full name, which the load waits for",
+                key=why)
         started = [n for n in launch.nodes if _is_container(n)]
         if not started:
             continue  # loads into a container started elsewhere (another launch, a running system)

@@ -198,6 +198,9 @@ class LaunchResult:
     set_remaps: list[tuple[Span, str | None, str | None, list[str]]] = field(default_factory=list)
     # Actions waiting on an event that can never come: (span, description)
     never_started: list[tuple[Span, str]] = field(default_factory=list)
+    # LoadComposableNodes(target_container=<container action>) run before that action has: (its
+    # span, the container action's line when known, why the container has not run then)
+    early_loads: list[tuple[Span, int | None, str]] = field(default_factory=list)
     # Event handlers waiting on each other through an action that is no node (a TimerAction, a
     # GroupAction...), which the plan's node cycles cannot show: (the first handler's span, the
     # cycle as text, its steps as text, the other handlers' spans)

@@ -117,6 +117,8 @@ class NodeBuilder:
         self.count = 0
         self.by_action: dict[str, list[str]] = {}  # "<file>#<action id>" -> node ids
         self.pending: list[tuple[str, str, str, Span, float | None]] = []  # key, node, reason, span, delay
+        # LoadComposableNodes run before their target container action: (span, container key, file)
+        self.early_loads: list[tuple[Span, str, str]] = []
         self.watched: list[tuple[ir.EventHandler, str | None, str]] = []
 
     # ---- helpers ------------------------------------------------------------------------------
@@ -465,6 +467,13 @@ class NodeBuilder:
             if ids:
                 node = self._node(ids[-1])
                 container, container_id, container_ns = node.fqn, node.id, node.namespace
+            fr = self.inst.frame
+            if fr.active is not False and fr.deferred is None and \
+                    all(self._node(i).active is False for i in ids):
+                # LoadComposableNodes.execute reads the container action's node_name, set only
+                # once that action has executed: in the synchronous first pass, only an action
+                # visited before this one has
+                self.early_loads.append((a.span, key, fr.file))
         elif a.target is not None:
             text = self.inst.ev.eval(a.target, scope)
             if text is not None:
@@ -522,6 +531,21 @@ class NodeBuilder:
             else:
                 continue
             res.never_started.append((h.span, f"the target action of its {_EVENT_CLASS.get(h.event, h.event)} is {why}"))
+        for span, key, file in self.early_loads:
+            if file in opaque_files:
+                continue
+            seen = self.inst.visited.get(key, "never")
+            ids = self.by_action.get(key, [])
+            line = self._node(ids[0]).span.line if ids else None
+            if seen == "never":
+                why = "is never added to the launch description"
+            elif seen is False:
+                why = "is disabled by its condition"
+            elif ids:
+                why = "only runs later (from an event handler or a timer)"
+            else:
+                continue
+            res.early_loads.append((span, line, why))
         for late in self.inst.late_handlers.values():
             for h in late:
                 res.never_started.append((h.span, LATE_COMPLETION))

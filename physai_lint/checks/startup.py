@@ -67,10 +67,15 @@ def handler_never_fires(ctx: CheckContext) -> Iterator[Diagnostic]:
             if span in seen:
                 continue
             seen.add(span)
-            help = "register the handler before its target action (put the RegisterEventHandler " \
-                   "first in the launch description)" if why == LATE_COMPLETION else \
-                "add the target action to the launch description, or register the handler under " \
-                "the same condition as its target"
+            if why == LATE_COMPLETION:
+                help = "register the handler before its target action (put the RegisterEventHandler " \
+                       "first in the launch description)"
+            elif why.startswith(("no TransitionEvent", "its start_state", "its goal_state")):
+                help = "give goal_state alone (the state the transition ends in), or a start_state " \
+                       "and goal_state one step apart in the lifecycle state machine"
+            else:
+                help = "add the target action to the launch description, or register the handler " \
+                       "under the same condition as its target"
             yield Diagnostic("S102", span, f"this event handler never fires: {why}, so its actions never run",
                              help=help, key=why)
 

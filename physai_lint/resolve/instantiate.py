@@ -281,6 +281,10 @@ class Instantiator:
         elif isinstance(a, ir.EventHandler):
             fr = replace(self.frame, lost=self._scope_losses(scope))
             self.handlers.append((a, fr, dict(scope.locals)))
+            if a.event == "on_state_transition" and fr.active is not False:
+                why = lifecycle_mismatch(a.start_state, a.goal_state)
+                if why is not None:
+                    self.result.never_started.append((a.span, why))
             if a.event == "on_execution_complete" and a.target_id and fr.active is not False:
                 # Action.visit arranges ExecutionComplete only if a handler for it is registered
                 # by then: a target already visited (and not visited again) never emits it
@@ -542,6 +546,37 @@ class Instantiator:
         self.result.opaque.append(part)
         if self.frame.active is False:
             self.result.inactive_opaque.append(part)
+
+
+# The lifecycle state machine rcl_lifecycle publishes TransitionEvents for (its state labels;
+# rcl_lifecycle/src/default_state_machine.c :: rcl_lifecycle_init_default_state_machine): each
+# transition goes from a primary state to a transition state, then to the state it ends in.
+LIFECYCLE_STEPS: dict[str, tuple[str, ...]] = {
+    "unconfigured": ("configuring", "shuttingdown"),
+    "inactive": ("cleaningup", "activating", "shuttingdown"),
+    "active": ("deactivating", "shuttingdown"),
+    "finalized": (),
+    "configuring": ("inactive", "unconfigured", "errorprocessing"),
+    "cleaningup": ("unconfigured", "inactive", "errorprocessing"),
+    "activating": ("active", "inactive", "errorprocessing"),
+    "deactivating": ("inactive", "active", "errorprocessing"),
+    "shuttingdown": ("finalized", "errorprocessing"),
+    "errorprocessing": ("unconfigured", "finalized"),
+}
+
+
+def lifecycle_mismatch(start: str | None, goal: str | None) -> str | None:
+    """Why ``OnStateTransition(start_state=start, goal_state=goal)`` matches no TransitionEvent
+    (it compares the event's state labels with the strings given), or None."""
+    for what, label in (("start_state", start), ("goal_state", goal)):
+        if label is not None and label not in LIFECYCLE_STEPS:
+            return (f'its {what} "{label}" is no lifecycle state label (they are '
+                    f'{", ".join(sorted(LIFECYCLE_STEPS))}), and OnStateTransition compares labels')
+    if start is None or goal is None or goal in LIFECYCLE_STEPS[start]:
+        return None
+    via = [m for m in LIFECYCLE_STEPS[start] if goal in LIFECYCLE_STEPS[m]]
+    hint = f' (it passes through "{via[0]}": "{start}" -> "{via[0]}", then "{via[0]}" -> "{goal}")' if via else ""
+    return f'no TransitionEvent goes from "{start}" to "{goal}"{hint}'
 
 
 def _config_reads(actions: tuple[ir.Action, ...]) -> list[tuple[str, vals.LaunchConfig]]:

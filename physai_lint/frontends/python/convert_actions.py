@@ -475,6 +475,8 @@ class ActionBuilder:
         if event == "on_process_io" and entities is None:
             entities = h.kwargs.get("on_stderr")
         goal, start = h.kwargs.get("goal_state"), h.kwargs.get("start_state")
+        if h.kwargs.get("matcher") is not None:  # OnStateTransition then compares nothing else
+            goal = start = None
         return L.EventHandler(i, s, cond, event, target_id, known, self.actions(entities, h.span),  # type: ignore[arg-type]
                               str(goal) if isinstance(goal, str) else None, str(start) if isinstance(start, str) else None)
 

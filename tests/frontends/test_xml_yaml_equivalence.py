@@ -71,7 +71,18 @@ def test_xml_and_yaml_give_the_same_ir() -> None:
 
 def test_both_formats_have_no_unknown_markup() -> None:
     for name in ("system.launch.xml", "system.launch.yaml"):
-        assert unknown_markup(load(name).markup or ir.MarkupFacts()) == []
+        launch = load(name)
+        assert unknown_markup(launch.markup or ir.MarkupFacts(), launch.format) == []
+
+
+def test_a_sep_key_is_xml_only() -> None:
+    # launch_xml's Entity.get_attr reads "<name>-sep" for a list; launch_yaml has no such key and
+    # rejects the file ("Unexpected key(s) found in `param`: {'value-sep'}")
+    text = "launch:\n- node:\n    pkg: p\n    exec: e\n    param:\n    - {name: n, value: a;b, value-sep: ;}\n"
+    launch = parse_yaml_launch("a.launch.yaml", text).launch
+    assert launch is not None and launch.markup is not None
+    assert [(m, h) for _, m, h in unknown_markup(launch.markup, "yaml")] == [
+        ('unknown attribute "value-sep" on "param"', "give value as a YAML list instead")]
 
 
 def test_markup_facts_record_every_tag_with_its_parent() -> None:

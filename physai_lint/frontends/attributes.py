@@ -325,6 +325,11 @@ def _yaml_param_typed(el: Element, attr: Attr) -> Iterator[Diagnostic]:
                        f"{_YAML_KIND.get(bad, 'a list')})")
                 help_ = (f"write every item as a {want.__name__}"
                          + (" (1.0, not 1)" if want is float else ""))
+            elif want is not str and not kinds:
+                # normalize_typed_substitution: no item type is a subset of {str, Substitution}
+                why = (f"TypeError \"Got a list of '<class 'str'>', expected a list of "
+                       f"'<class '{want.__name__}'>'\": launch takes an empty list for a list of strings")
+                help_ = f"give at least one item, or drop type: {ident}"
             elif want is not str and kinds and all(k is str for k in kinds) and \
                     not all("$(" in i.text for i in attr.items):
                 why = (f"TypeError \"Got a list of '<class 'str'>', expected a list of "

@@ -245,6 +245,7 @@ def test_yaml_boolean_help_writes_the_boolean_the_text_means(value: str, help_: 
     ('{name: q, value: ["1", "2"], type: list_of_int}', "list_of_int"),  # "Got a list of str"
     ("{name: q, value: [1, 2], type: list_of_float}", "list_of_float"),
     ('{name: q, value: "1,2", type: list_of_int}', "list_of_int"),
+    ("{name: q, value: [], type: list_of_int}", "list_of_int"),  # no item type: "a list of str"
 ])
 def test_yaml_parameter_value_of_another_type(param: str, type_: str) -> None:
     text = f"launch:\n- node:\n    pkg: p\n    exec: e\n    param:\n    - {param}\n"
@@ -259,6 +260,8 @@ def test_yaml_parameter_value_of_another_type(param: str, type_: str) -> None:
     '{name: q, value: "$(var n)", type: int}',  # converted when evaluated
     "{name: q, value: [1.0, 2.5], type: list_of_float}",
     '{name: q, value: ["a", "b"], type: list_of_str}',
+    "{name: q, value: [], type: list_of_str}",
+    "{name: q, value: []}",
 ])
 def test_yaml_parameter_value_of_its_type(param: str) -> None:
     text = f"launch:\n- node:\n    pkg: p\n    exec: e\n    param:\n    - {param}\n"

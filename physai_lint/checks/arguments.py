@@ -28,9 +28,15 @@ def undefined_configuration(ctx: CheckContext) -> Iterator[Diagnostic]:
             hint = (f"it is declared at {relpath(later.span.file)}:{later.span.line}, but that declaration "
                     "does not reach this read (it runs later, or in a scope that does not include it)"
                     if later is not None else suggestion(read.name, declared))
+            lead = "is read but never declared or set"
+            if read.note == "timer period":
+                lead = "is not set when the TimerAction performs its period"
+                hint = ("TimerAction._wait_to_fire_event performs it once the whole launch description "
+                        "has been visited, with the configurations left at the top level: a group or "
+                        "include scope that declared or set it has ended by then")
             yield Diagnostic(
                 "L101", read.span,
-                f'launch configuration "{read.name}" is read but never declared or set'
+                f'launch configuration "{read.name}" {lead}'
                 + (f"; {hint}" if hint else "")
                 + f'; launch fails with "launch configuration \'{read.name}\' does not exist"',
                 help=f'declare it with DeclareLaunchArgument("{read.name}", default_value=...) / '

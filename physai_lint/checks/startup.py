@@ -7,10 +7,9 @@ from collections.abc import Iterator
 from physai_lint.checks._params import effective
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic, Related
-from physai_lint.resolve.nodes import LATE_COMPLETION
+from physai_lint.resolve.instantiate import never_fires_help
+from physai_lint.resolve.nodes import EVENT_VERB
 
-_VERB = {"on_process_start": "start", "on_process_exit": "exit", "on_execution_complete": "completion",
-         "on_state_transition": "a state transition"}
 
 
 @rule("S101", "startup-cycle")
@@ -25,7 +24,7 @@ def startup_cycle(ctx: CheckContext) -> Iterator[Diagnostic]:
             seen.add((span, text))
             yield Diagnostic(
                 "S101", span,
-                f"startup cycle {text}: {steps}; each only runs from another's event handler, so "
+                f"startup cycle {text}: {steps}; each only starts from another's event handler, so "
                 "none of them ever starts",
                 help="add one of them to the launch description directly (it is the root of the chain)",
                 related=tuple(Related(s, "handler in the cycle") for s in others),
@@ -37,7 +36,7 @@ def startup_cycle(ctx: CheckContext) -> Iterator[Diagnostic]:
         for cyc in plan.cycles:
             if not cyc.deadlock:
                 continue  # a member starts: launch runs an action twice, not a deadlock
-            handlers = sorted({e.span for e in cyc.edges if e.span is not None and e.reason in _VERB},
+            handlers = sorted({e.span for e in cyc.edges if e.span is not None and e.reason in EVENT_VERB},
                               key=lambda s: (s.file, s.line, s.col))
             if not handlers:
                 continue
@@ -48,7 +47,7 @@ def startup_cycle(ctx: CheckContext) -> Iterator[Diagnostic]:
             seen.add((span, key))
             steps = []
             for e in cyc.edges:
-                what = _VERB.get(e.reason, e.reason)
+                what = EVENT_VERB.get(e.reason, e.reason)
                 steps.append(f'"{labels[e.after]}" waits for {what} of "{labels[e.before]}"')
             yield Diagnostic(
                 "S101", span,
@@ -67,17 +66,8 @@ def handler_never_fires(ctx: CheckContext) -> Iterator[Diagnostic]:
             if span in seen:
                 continue
             seen.add(span)
-            if why == LATE_COMPLETION:
-                help = "register the handler before its target action (put the RegisterEventHandler " \
-                       "first in the launch description)"
-            elif why.startswith(("no TransitionEvent", "its start_state", "its goal_state")):
-                help = "give goal_state alone (the state the transition ends in), or a start_state " \
-                       "and goal_state one step apart in the lifecycle state machine"
-            else:
-                help = "add the target action to the launch description, or register the handler " \
-                       "under the same condition as its target"
             yield Diagnostic("S102", span, f"this event handler never fires: {why}, so its actions never run",
-                             help=help, key=why)
+                             help=never_fires_help(why), key=why)
 
 
 @rule("S103", "invalid-timer-period")

@@ -114,6 +114,11 @@ class Instantiator:
         # OnExecutionComplete handlers registered after their target was visited: target key ->
         # the handlers (emptied when the target is visited again)
         self.late_handlers: dict[str, list[ir.EventHandler]] = {}
+        # actions visited in launch's synchronous first pass (outside timers and handlers), and
+        # those visited in a deferred one: only the first pass's order is the order they run in
+        self.first_pass: set[str] = set()
+        self.deferred_visits: set[str] = set()
+        self.read_note = ""  # what ConfigReads made now are (``ConfigRead.note``)
         self.triggered: dict[str, tuple[ir.Action, list[tuple[tuple[str, str, Span], ...]]]] = {}
         # the files in which an action or include the linter cannot follow ran: it may have
         # declared or set any launch configuration their later reads ask for (includes and opaque
@@ -128,7 +133,8 @@ class Instantiator:
             return
         # after an action or include the linter cannot follow, "nothing set it" is not known
         defined = defined or self.frame.file in self.configs_open
-        self.result.config_reads.append(ConfigRead(name, span, defined, has_default, self.frame.active))
+        self.result.config_reads.append(ConfigRead(name, span, defined, has_default, self.frame.active,
+                                                   self.read_note))
         for arg in self.declared_by_name.get(name, ()):
             arg.reads += 1
 
@@ -216,11 +222,18 @@ class Instantiator:
             None if (prev is None or self.frame.active is None) else False)
         if self.late_handlers and key in self.late_handlers:
             del self.late_handlers[key]  # visited again: now with the handler registered
+        if self.frame.deferred is None:
+            self.first_pass.add(key)
+        else:
+            self.deferred_visits.add(key)
         if self.frame.active is not False:
             if not self.frame.trigger:
                 self.free.add(key)
             elif key not in self.free:
-                self.triggered.setdefault(key, (a, []))[1].append(tuple(self.frame.trigger))
+                entry = self.triggered.get(key)
+                if entry is None:
+                    entry = self.triggered[key] = (a, [])
+                entry[1].append(tuple(self.frame.trigger))
         try:
             if self.frame.active is False and outer.active is not False:
                 # Skipped by real launch: walk a throwaway copy so its nodes show as inactive.
@@ -289,7 +302,9 @@ class Instantiator:
                 # Action.visit arranges ExecutionComplete only if a handler for it is registered
                 # by then: a target already visited (and not visited again) never emits it
                 target = f"{fr.file}#{a.target_id}"
-                if self.visited.get(target, False) is not False:
+                # certain only for a target visited in the first pass alone: that pass precedes
+                # every deferred one, where the walk's order is not the order actions run in
+                if self.visited.get(target, False) is not False and target not in self.deferred_visits:
                     self.late_handlers.setdefault(target, []).append(a)
         elif isinstance(a, ir.OpaqueAction):
             if (a.reason and a.other or a.again) and self.specialize is not None \
@@ -467,7 +482,11 @@ class Instantiator:
     def _timer_fires(self, a: ir.Timer, top: Scope) -> Frame:
         """The period of timer ``a`` (``self.frame`` is the timer's), performed as
         ``_wait_to_fire_event`` does; the frame its actions run in."""
-        text = self.ev.eval(a.period, top)
+        self.read_note = "timer period"
+        try:
+            text = self.ev.eval(a.period, top)
+        finally:
+            self.read_note = ""
         period: float | None = None
         if text is not None:
             try:
@@ -570,13 +589,34 @@ def lifecycle_mismatch(start: str | None, goal: str | None) -> str | None:
     (it compares the event's state labels with the strings given), or None."""
     for what, label in (("start_state", start), ("goal_state", goal)):
         if label is not None and label not in LIFECYCLE_STEPS:
-            return (f'its {what} "{label}" is no lifecycle state label (they are '
+            return (f'its {what} "{label}" {NO_LABEL} (they are '
                     f'{", ".join(sorted(LIFECYCLE_STEPS))}), and OnStateTransition compares labels')
     if start is None or goal is None or goal in LIFECYCLE_STEPS[start]:
         return None
     via = [m for m in LIFECYCLE_STEPS[start] if goal in LIFECYCLE_STEPS[m]]
     hint = f' (it passes through "{via[0]}": "{start}" -> "{via[0]}", then "{via[0]}" -> "{goal}")' if via else ""
-    return f'no TransitionEvent goes from "{start}" to "{goal}"{hint}'
+    return f'{NO_TRANSITION} from "{start}" to "{goal}"{hint}'
+
+
+NO_TRANSITION = "no TransitionEvent goes"
+NO_LABEL = "is no lifecycle state label"
+
+
+def never_fires_help(why: str) -> str:
+    """The help of S102 for a handler that never fires because of ``why``
+    (``LaunchResult.never_started``)."""
+    from physai_lint.resolve.nodes import LATE_COMPLETION
+
+    if why == LATE_COMPLETION:
+        return "register the handler before its target action (put the RegisterEventHandler first in the " \
+               "launch description)"
+    if why.startswith(NO_TRANSITION):
+        return "give goal_state alone (the state the transition ends in), or a start_state and goal_state " \
+               "one step apart in the lifecycle state machine"
+    if NO_LABEL in why:
+        return "use a state label: unconfigured, inactive, active, finalized, or a transition state"
+    return "add the target action to the launch description, or register the handler under the same " \
+           "condition as its target"
 
 
 def _config_reads(actions: tuple[ir.Action, ...]) -> list[tuple[str, vals.LaunchConfig]]:

@@ -137,6 +137,7 @@ class ConfigRead:
     defined: bool
     has_default: bool
     active: Activity = True
+    note: str = ""  # "timer period": read when a TimerAction performs its period, after the pass
 
 
 @dataclass

@@ -116,6 +116,7 @@ class NodeBuilder:
         self.inst = inst
         self.count = 0
         self.by_action: dict[str, list[str]] = {}  # "<file>#<action id>" -> node ids
+        self.by_id: dict[str, NodeInstance] = {}  # every node registered, by id
         self.pending: list[tuple[str, str, str, Span, float | None]] = []  # key, node, reason, span, delay
         # LoadComposableNodes run before their target container action: (span, container key, file)
         self.early_loads: list[tuple[Span, str, str]] = []
@@ -312,6 +313,7 @@ class NodeBuilder:
         fr = self.inst.frame
         res = self.inst.result
         res.nodes.append(inst_)
+        self.by_id[inst_.id] = inst_
         if key is not None:
             self.by_action.setdefault(key, []).append(inst_.id)
         delay = fr.delay
@@ -376,9 +378,10 @@ class NodeBuilder:
 
     def component(self, cn: ir.ComposableNode, scope: Scope, container: str | None,
                   container_id: str | None, container_ns: str | None, key: str,
-                  honours_condition: bool = True) -> None:
+                  honours_condition: bool = True, load_condition: ir.Condition | None = None) -> None:
         """``honours_condition``: False where launch_ros never evaluates the description's
-        condition (humble's LoadComposableNodes: the component is loaded whatever it says)."""
+        condition (humble's LoadComposableNodes: the component is loaded whatever it says);
+        ``load_condition``: the condition of the action loading it."""
         fr = self.inst.frame
         active = fr.active
         ignored = cn.condition is not None and not honours_condition
@@ -424,8 +427,9 @@ class NodeBuilder:
             name_explicit=name_given, namespace_explicit=specified, container=container,
             container_id=container_id, package_from_config=package_from_config,
         )
-        if ignored and active is not False:
-            self.inst.result.ignored_conditions.append((cn.condition.span, cn.condition.raw, fqn))  # type: ignore[union-attr]
+        if ignored and active is not False and not _same_condition(cn.condition, load_condition):
+            raw = cn.condition.raw if not cn.condition.raw.endswith("(...)") else ""  # type: ignore[union-attr]
+            self.inst.result.ignored_conditions.append((cn.condition.span, raw, fqn))  # type: ignore[union-attr]
         # loaded when the action loading it runs: after the timer or the event that runs that
         self._register(inst_, None, container_id)
         if container_id is not None:
@@ -487,7 +491,7 @@ class NodeBuilder:
         honours = getattr(self.inst.packages, "distro", "humble") != "humble"
         for cn in a.nodes:
             self.component(cn, scope, container, container_id, container_ns,
-                           f"{self.inst.frame.file}#{a.id}", honours)
+                           f"{self.inst.frame.file}#{a.id}", honours, a.condition)
 
     def process(self, a: ir.ExecuteProcess, scope: Scope) -> None:
         fr = self.inst.frame
@@ -508,10 +512,7 @@ class NodeBuilder:
             self.watched.append((h, key, fr.file))
 
     def _node(self, node_id: str) -> NodeInstance:
-        for n in self.inst.result.nodes:
-            if n.id == node_id:
-                return n
-        raise KeyError(node_id)
+        return self.by_id[node_id]
 
     def finish(self) -> None:
         res = self.inst.result
@@ -541,10 +542,12 @@ class NodeBuilder:
                 why = "is never added to the launch description"
             elif seen is False:
                 why = "is disabled by its condition"
-            elif ids:
-                why = "only runs later (from an event handler or a timer)"
-            else:
+            elif not ids:
                 continue
+            elif key in self.inst.first_pass:
+                why = "comes after it in the launch description"
+            else:
+                why = "only runs later (from an event handler or a timer)"
             res.early_loads.append((span, line, why))
         for late in self.inst.late_handlers.values():
             for h in late:
@@ -587,7 +590,7 @@ class NodeBuilder:
             steps, spans = [], []
             for a, b in zip(path, path[1:] + path[:1]):
                 event, span = graph[a][b]
-                steps.append(f"{self._label(a)} waits for {_VERB.get(event, event)} of {self._label(b)}")
+                steps.append(f"{self._label(a)} waits for {EVENT_VERB.get(event, event)} of {self._label(b)}")
                 spans.append(span)
             text = " -> ".join(self._label(k) for k in [*path, path[0]])
             order = sorted(set(spans), key=lambda s: (s.file, s.line, s.col))
@@ -608,11 +611,29 @@ class NodeBuilder:
 LATE_COMPLETION = ("its target action was already run when the handler was registered, and launch "
                    "only emits ExecutionComplete for an action visited while a handler for it exists "
                    "(Action.visit)")
-_VERB = {"on_process_start": "the start", "on_process_exit": "the exit",
-         "on_execution_complete": "the completion", "on_state_transition": "a state transition"}
+# What a handler of each event waits for, in messages ('"b" waits for start of "a"').
+EVENT_VERB = {"on_process_start": "start", "on_process_exit": "exit", "on_execution_complete": "completion",
+              "on_state_transition": "a state transition"}
 _ACTION_CLASS = {"Timer": "TimerAction", "Group": "GroupAction", "Include": "IncludeLaunchDescription",
                  "NodeAction": "Node", "EventHandler": "RegisterEventHandler",
                  "OpaqueAction": "OpaqueFunction"}
+
+
+def _same_condition(a: ir.Condition | None, b: ir.Condition | None) -> bool:
+    """The same condition written twice (kind and value, wherever each was written)."""
+    return a is not None and b is not None and a.kind == b.kind and _unspanned(a.value) == _unspanned(b.value)
+
+
+def _unspanned(x: Any) -> Any:
+    """A model value as nested tuples without its positions."""
+    import dataclasses
+
+    if dataclasses.is_dataclass(x) and not isinstance(x, type):
+        return (type(x).__name__, *(_unspanned(getattr(x, f.name)) for f in dataclasses.fields(x)
+                                    if f.name != "span"))
+    if isinstance(x, tuple):
+        return tuple(_unspanned(i) for i in x)
+    return x
 
 
 def _cycle_through(key: str, graph: dict[str, dict[str, Any]], members: set[str]) -> list[str] | None:

@@ -98,7 +98,7 @@ def test_a_container_filters_its_own_descriptions_on_humble(demo_findings):
 def test_python_component_beside_its_standalone_twin(demo_findings):
     # use_composition defaults to false: the standalone node runs, and on humble the component too
     (line, message), = _py(demo_findings, "L115")
-    assert line == 17 and message.startswith("the condition IfCondition(")
+    assert line == 17 and message.startswith('the condition of component "/lidar/scan_filter" is never')
     assert [line for line, _ in _py(demo_findings, "N101")] == [19]
     assert _py(demo_findings, "L115", "jazzy") == []
     assert _py(demo_findings, "N101", "jazzy") == []
@@ -109,3 +109,15 @@ def test_python_component_beside_its_standalone_twin(demo_findings):
 def test_not_reported_where_the_load_never_runs(demo_findings):
     load_condition = "\n            condition=IfCondition(composed),"
     assert _py(demo_findings, "L115", load_condition=load_condition) == []
+
+
+def test_a_condition_the_load_carries_too_is_not_reported(demo_findings):
+    # written on both: the one on the LoadComposableNodes is evaluated, so nothing is lost (true
+    # by default here, so the load runs)
+    text = LOAD_PY.format(load_condition="\n            condition=IfCondition(composed),").replace(
+        "default_value='false'", "default_value='true'")
+    assert demo_findings({"launch/a.launch.py": text}, "launch/a.launch.py", "L115") == []
+    yaml = LOAD_YAML.replace('default: "false"', 'default: "true"')
+    assert [line for line, _ in _yaml(demo_findings, yaml, "L115")] == [19]
+    yaml = yaml.replace("  - load_composable_node:\n", "  - load_composable_node:\n      if: $(var teleop_stream)\n")
+    assert _yaml(demo_findings, yaml, "L115") == []

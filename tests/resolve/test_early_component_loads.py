@@ -39,7 +39,10 @@ def test_a_container_in_a_timer_runs_after_the_load(demo_findings):
 
 
 def test_a_container_after_the_load_in_the_description(demo_findings):
-    assert [line for line, _ in _s203(demo_findings, "load, container")] == [13]
+    ((line, message),) = _s203(demo_findings, "load, container")
+    assert line == 13 and message.startswith(
+        "LoadComposableNodes targets the ComposableNodeContainer action at line 11, which comes after "
+        "it in the launch description:")
 
 
 def test_a_container_never_added(demo_findings):

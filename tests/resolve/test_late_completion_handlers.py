@@ -2,6 +2,8 @@
 ExecutionComplete only if a handler for it is registered when the action is visited
 (context.would_handle_event), so a handler added later never fires. OnProcessStart/OnProcessExit
 events come later (from the process), so their order does not matter."""
+import pytest
+
 LAUNCH = """from launch import LaunchDescription
 from launch.actions import ExecuteProcess, RegisterEventHandler
 from launch.event_handlers import {event}
@@ -38,3 +40,35 @@ def test_a_target_run_again_after_the_handler_fires_it(demo_findings):
 
 def test_process_events_do_not_depend_on_the_order(demo_findings):
     assert _s102(demo_findings, "OnProcessExit", "on_exit", "can_up, handler") == []
+
+
+TIMED = """from launch import LaunchDescription
+from launch.actions import ExecuteProcess, RegisterEventHandler, TimerAction
+from launch.event_handlers import OnExecutionComplete, OnProcessExit, OnProcessStart
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    a = ExecuteProcess(cmd=['sleep', '1'])
+    proc = ExecuteProcess(cmd=['ip', 'link', 'set', 'can0', 'up'])
+    h = RegisterEventHandler(OnExecutionComplete(target_action=proc, on_completion=[
+        Node(package='demo', executable='driver')]))
+    return LaunchDescription([{order}])
+"""
+
+
+@pytest.mark.parametrize("order", [
+    # the walk visits the 5 s timer's actions first; launch fires the 1 s timer first
+    "TimerAction(period=5.0, actions=[proc]), TimerAction(period=1.0, actions=[h])",
+    # the target runs on a's exit, the handler is registered on a's start
+    "a, RegisterEventHandler(OnProcessExit(target_action=a, on_exit=[proc])), "
+    "RegisterEventHandler(OnProcessStart(target_action=a, on_start=[h]))",
+])
+def test_the_order_of_deferred_actions_is_not_judged(demo_findings, order):
+    text = TIMED.format(order=order)
+    assert demo_findings({"launch/a.launch.py": text}, "launch/a.launch.py", "S102") == []
+
+
+def test_a_handler_deferred_after_a_first_pass_target_is_late(demo_findings):
+    text = TIMED.format(order="proc, TimerAction(period=1.0, actions=[h])")
+    assert [line for line, _ in demo_findings({"launch/a.launch.py": text}, "launch/a.launch.py", "S102")] == [10]

@@ -49,9 +49,8 @@ def _s101(demo_findings, text: str) -> list[tuple[int, str]]:
 def test_a_timer_and_a_node_waiting_for_each_other_never_start(demo_findings):
     assert _s101(demo_findings, CYCLE) == [(12, (
         'startup cycle TimerAction (line 10) -> "move_group" -> TimerAction (line 10): TimerAction '
-        '(line 10) waits for the start of "move_group", "move_group" waits for the completion of '
-        "TimerAction (line 10); each only runs from another's event handler, so none of them ever "
-        "starts"))]
+        '(line 10) waits for start of "move_group", "move_group" waits for completion of TimerAction '
+        "(line 10); each only starts from another's event handler, so none of them ever starts"))]
 
 
 def test_a_group_in_the_cycle_is_named_too(demo_findings):

@@ -53,6 +53,19 @@ def run_memo(store: dict[Any, Any], key: Any, owner: object, build: Any) -> Any:
     return found[1]
 
 
+def once(ctx: CheckContext, field: str, key: Any = None) -> Iterator[Any]:
+    """The entries of ``LaunchResult.<field>`` over every launch, each once: two launches that
+    include one file record its entries twice. ``key(entry)`` says which are the same (default:
+    the entry's first item, its position)."""
+    seen: set[Any] = set()
+    for launch in ctx.launches:
+        for entry in getattr(launch, field):
+            k = key(entry) if key is not None else entry[0]
+            if k not in seen:
+                seen.add(k)
+                yield entry
+
+
 def switched_off_by(node: NodeInstance, value: str | None) -> bool:
     """``value`` is empty and the node not certainly started: "" is how an argument switches a node
     off, so with a value that starts it the remap or file would be another (N105, P101)."""

@@ -6,7 +6,7 @@ from collections.abc import Iterator
 from typing import Any
 
 from physai_lint.checks._params import effective, fully_known
-from physai_lint.checks._util import CONTAINER_EXECUTABLES, command_words, did_you_mean, where
+from physai_lint.checks._util import CONTAINER_EXECUTABLES, command_words, did_you_mean, once, where
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.graph.plan import SPAWNER_VALUE_OPTIONS
 from physai_lint.model.findings import Diagnostic, Related
@@ -185,24 +185,21 @@ def _is_container(node: NodeInstance) -> bool:
 
 @rule("S203", "container-not-launched")
 def container_not_launched(ctx: CheckContext) -> Iterator[Diagnostic]:
+    for span, line, why in once(ctx, "early_loads"):
+        target = f"the ComposableNodeContainer action at line {line}, which" if line is not None \
+            else "a ComposableNodeContainer action that"
+        yield Diagnostic(
+            "S203", span,
+            f"LoadComposableNodes targets {target} {why}: "
+            "LoadComposableNodes.execute reads the container's node_name before it has executed "
+            "and raises RuntimeError(\"cannot access 'node_name' before executing action\"), "
+            "which ends the launch",
+            help="add the container to the launch description before the LoadComposableNodes "
+                 "(in the same event handler, if it is started from one), or give "
+                 "target_container the container's full name, which the load waits for",
+            key=why)
     seen: set[object] = set()
     for launch in ctx.launches:
-        for span, line, why in launch.early_loads:
-            if span in seen:
-                continue
-            seen.add(span)
-            target = f"the ComposableNodeContainer action at line {line}, which" if line is not None \
-                else "a ComposableNodeContainer action that"
-            yield Diagnostic(
-                "S203", span,
-                f"LoadComposableNodes targets {target} {why}: "
-                "LoadComposableNodes.execute reads the container's node_name before it has executed "
-                "and raises RuntimeError(\"cannot access 'node_name' before executing action\"), "
-                "which ends the launch",
-                help="add the container to the launch description before the LoadComposableNodes "
-                     "(in the same event handler, if it is started from one), or give "
-                     "target_container the container's full name, which the load waits for",
-                key=why)
         started = [n for n in launch.nodes if _is_container(n)]
         if not started:
             continue  # loads into a container started elsewhere (another launch, a running system)

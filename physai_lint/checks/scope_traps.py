@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from physai_lint.checks._util import all_nodes, where
+from physai_lint.checks._util import all_nodes, once, where
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic, Related
 from physai_lint.model.launch import NodeAction
@@ -14,19 +14,14 @@ from physai_lint.model.values import literal_of
 
 @rule("L109", "invalid-condition-value")
 def invalid_condition_value(ctx: CheckContext) -> Iterator[Diagnostic]:
-    seen: set[object] = set()
-    for launch in ctx.launches:
-        for span, value in launch.invalid_conditions:
-            if (span, value) in seen:
-                continue
-            seen.add((span, value))
-            yield Diagnostic(
-                "L109", span,
-                f'condition value "{value}" is not one of "true", "false", "1", "0" (any case); '
-                f'launch fails with InvalidConditionExpressionError',
-                help="pass a boolean string (true/false/1/0), or compare explicitly with "
-                     "LaunchConfigurationEquals / $(equals ...) / PythonExpression",
-                key=value)
+    for span, value in once(ctx, "invalid_conditions", lambda e: e):
+        yield Diagnostic(
+            "L109", span,
+            f'condition value "{value}" is not one of "true", "false", "1", "0" (any case); '
+            f'launch fails with InvalidConditionExpressionError',
+            help="pass a boolean string (true/false/1/0), or compare explicitly with "
+                 "LaunchConfigurationEquals / $(equals ...) / PythonExpression",
+            key=value)
 
 
 def _namespace_absolute(node: object) -> bool:
@@ -110,38 +105,28 @@ def dirname_after_include(ctx: CheckContext) -> Iterator[Diagnostic]:
 
 @rule("L113", "set-use-sim-time-no-effect")
 def set_use_sim_time_no_effect(ctx: CheckContext) -> Iterator[Diagnostic]:
-    seen: set[object] = set()
-    for launch in ctx.launches:
-        for span in launch.use_sim_time_actions:
-            if span in seen:
-                continue
-            seen.add(span)
-            yield Diagnostic(
-                "L113", span,
-                "SetUseSimTime / <set_use_sim_time> does not set the use_sim_time parameter of the "
-                "nodes launched after it",
-                help="use SetParameter(name='use_sim_time', value=True) / "
-                     '<set_parameter name="use_sim_time" value="true"/>, or pass use_sim_time in '
-                     "each node's parameters",
-                key="use_sim_time")
+    for span in once(ctx, "use_sim_time_actions", lambda s: s):
+        yield Diagnostic(
+            "L113", span,
+            "SetUseSimTime / <set_use_sim_time> does not set the use_sim_time parameter of the "
+            "nodes launched after it",
+            help="use SetParameter(name='use_sim_time', value=True) / "
+                 '<set_parameter name="use_sim_time" value="true"/>, or pass use_sim_time in '
+                 "each node's parameters",
+            key="use_sim_time")
 
 
 @rule("L115", "component-condition-ignored")
 def component_condition_ignored(ctx: CheckContext) -> Iterator[Diagnostic]:
-    seen: set[object] = set()
-    for launch in ctx.launches:
-        for span, raw, fqn in launch.ignored_conditions:
-            if span in seen:
-                continue
-            seen.add(span)
-            who = f'component "{fqn}"' if fqn else "this component"
-            what = f"the condition {raw}" if raw else "the condition"
-            yield Diagnostic(
-                "L115", span,
-                f"{what} of {who} is never evaluated on {ctx.distro}: "
-                "LoadComposableNodes loads every composable node description it is given, so the "
-                "component is loaded whatever the condition says",
-                help="put the condition on the LoadComposableNodes / <load_composable_node> (one "
-                     "per condition), or list the component in its container's "
-                     "composable_node_descriptions, where humble does evaluate it",
-                key=raw or "condition")
+    for span, raw, fqn in once(ctx, "ignored_conditions"):
+        who = f'component "{fqn}"' if fqn else "this component"
+        what = f"the condition {raw}" if raw else "the condition"
+        yield Diagnostic(
+            "L115", span,
+            f"{what} of {who} is never evaluated on {ctx.distro}: "
+            "LoadComposableNodes loads every composable node description it is given, so the "
+            "component is loaded whatever the condition says",
+            help="put the condition on the LoadComposableNodes / <load_composable_node> (one "
+                 "per condition), or list the component in its container's "
+                 "composable_node_descriptions, where humble does evaluate it",
+            key=raw or "condition")

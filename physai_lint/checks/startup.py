@@ -5,10 +5,10 @@ import math
 from collections.abc import Iterator
 
 from physai_lint.checks._params import effective
+from physai_lint.checks._util import once
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic, Related
-from physai_lint.resolve.instantiate import never_fires_help
-from physai_lint.resolve.nodes import EVENT_VERB
+from physai_lint.resolve.nodes import EVENT_VERB, never_fires_help
 
 
 
@@ -16,19 +16,16 @@ from physai_lint.resolve.nodes import EVENT_VERB
 def startup_cycle(ctx: CheckContext) -> Iterator[Diagnostic]:
     from physai_lint.graph.plan import startup_cycles
 
+    for span, text, steps, others in once(ctx, "trigger_cycles", lambda e: e[:2]):
+        yield Diagnostic(
+            "S101", span,
+            f"startup cycle {text}: {steps}; each only starts from another's event handler, so "
+            "none of them ever starts",
+            help="add one of them to the launch description directly (it is the root of the chain)",
+            related=tuple(Related(s, "handler in the cycle") for s in others),
+            key=text)
     seen: set[object] = set()
     for launch in ctx.launches:
-        for span, text, steps, others in launch.trigger_cycles:
-            if (span, text) in seen:
-                continue
-            seen.add((span, text))
-            yield Diagnostic(
-                "S101", span,
-                f"startup cycle {text}: {steps}; each only starts from another's event handler, so "
-                "none of them ever starts",
-                help="add one of them to the launch description directly (it is the root of the chain)",
-                related=tuple(Related(s, "handler in the cycle") for s in others),
-                key=text)
         if not launch.edges:
             continue
         plan = startup_cycles(launch, lambda n: effective(ctx, n))
@@ -60,14 +57,9 @@ def startup_cycle(ctx: CheckContext) -> Iterator[Diagnostic]:
 
 @rule("S102", "handler-never-fires")
 def handler_never_fires(ctx: CheckContext) -> Iterator[Diagnostic]:
-    seen: set[object] = set()
-    for launch in ctx.launches:
-        for span, why in launch.never_started:
-            if span in seen:
-                continue
-            seen.add(span)
-            yield Diagnostic("S102", span, f"this event handler never fires: {why}, so its actions never run",
-                             help=never_fires_help(why), key=why)
+    for span, why in once(ctx, "never_started"):
+        yield Diagnostic("S102", span, f"this event handler never fires: {why}, so its actions never run",
+                         help=never_fires_help(why), key=why)
 
 
 @rule("S103", "invalid-timer-period")

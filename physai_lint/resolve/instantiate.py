@@ -26,7 +26,7 @@ from physai_lint.resolve.model import (
     LaunchResult,
     StartEdge,
 )
-from physai_lint.resolve.nodes import NodeBuilder
+from physai_lint.resolve.nodes import NodeBuilder, lifecycle_mismatch
 
 if TYPE_CHECKING:
     from physai_lint.workspace import PackageIndex
@@ -565,58 +565,6 @@ class Instantiator:
         self.result.opaque.append(part)
         if self.frame.active is False:
             self.result.inactive_opaque.append(part)
-
-
-# The lifecycle state machine rcl_lifecycle publishes TransitionEvents for (its state labels;
-# rcl_lifecycle/src/default_state_machine.c :: rcl_lifecycle_init_default_state_machine): each
-# transition goes from a primary state to a transition state, then to the state it ends in.
-LIFECYCLE_STEPS: dict[str, tuple[str, ...]] = {
-    "unconfigured": ("configuring", "shuttingdown"),
-    "inactive": ("cleaningup", "activating", "shuttingdown"),
-    "active": ("deactivating", "shuttingdown"),
-    "finalized": (),
-    "configuring": ("inactive", "unconfigured", "errorprocessing"),
-    "cleaningup": ("unconfigured", "inactive", "errorprocessing"),
-    "activating": ("active", "inactive", "errorprocessing"),
-    "deactivating": ("inactive", "active", "errorprocessing"),
-    "shuttingdown": ("finalized", "errorprocessing"),
-    "errorprocessing": ("unconfigured", "finalized"),
-}
-
-
-def lifecycle_mismatch(start: str | None, goal: str | None) -> str | None:
-    """Why ``OnStateTransition(start_state=start, goal_state=goal)`` matches no TransitionEvent
-    (it compares the event's state labels with the strings given), or None."""
-    for what, label in (("start_state", start), ("goal_state", goal)):
-        if label is not None and label not in LIFECYCLE_STEPS:
-            return (f'its {what} "{label}" {NO_LABEL} (they are '
-                    f'{", ".join(sorted(LIFECYCLE_STEPS))}), and OnStateTransition compares labels')
-    if start is None or goal is None or goal in LIFECYCLE_STEPS[start]:
-        return None
-    via = [m for m in LIFECYCLE_STEPS[start] if goal in LIFECYCLE_STEPS[m]]
-    hint = f' (it passes through "{via[0]}": "{start}" -> "{via[0]}", then "{via[0]}" -> "{goal}")' if via else ""
-    return f'{NO_TRANSITION} from "{start}" to "{goal}"{hint}'
-
-
-NO_TRANSITION = "no TransitionEvent goes"
-NO_LABEL = "is no lifecycle state label"
-
-
-def never_fires_help(why: str) -> str:
-    """The help of S102 for a handler that never fires because of ``why``
-    (``LaunchResult.never_started``)."""
-    from physai_lint.resolve.nodes import LATE_COMPLETION
-
-    if why == LATE_COMPLETION:
-        return "register the handler before its target action (put the RegisterEventHandler first in the " \
-               "launch description)"
-    if why.startswith(NO_TRANSITION):
-        return "give goal_state alone (the state the transition ends in), or a start_state and goal_state " \
-               "one step apart in the lifecycle state machine"
-    if NO_LABEL in why:
-        return "use a state label: unconfigured, inactive, active, finalized, or a transition state"
-    return "add the target action to the launch description, or register the handler under the same " \
-           "condition as its target"
 
 
 def _config_reads(actions: tuple[ir.Action, ...]) -> list[tuple[str, vals.LaunchConfig]]:

@@ -385,11 +385,11 @@ class NodeBuilder:
         fr = self.inst.frame
         active = fr.active
         ignored = cn.condition is not None and not honours_condition
+        from physai_lint.resolve.instantiate import combine
+
         for c in (cn.branch, cn.condition):
             if c is None:
                 continue
-            from physai_lint.resolve.instantiate import combine
-
             # evaluated even where launch_ros ignores it: what it reads stays read (no L102 on
             # top of L115), and it is how the file means to be run once the condition is moved
             cond = self.inst.ev.condition(c.kind, c.value, scope)
@@ -611,6 +611,57 @@ class NodeBuilder:
 LATE_COMPLETION = ("its target action was already run when the handler was registered, and launch "
                    "only emits ExecutionComplete for an action visited while a handler for it exists "
                    "(Action.visit)")
+# The lifecycle state machine rcl_lifecycle publishes TransitionEvents for (its state labels;
+# rcl_lifecycle/src/default_state_machine.c :: rcl_lifecycle_init_default_state_machine): each
+# transition goes from a primary state to a transition state, then to the state it ends in.
+LIFECYCLE_STEPS: dict[str, tuple[str, ...]] = {
+    "unconfigured": ("configuring", "shuttingdown"),
+    "inactive": ("cleaningup", "activating", "shuttingdown"),
+    "active": ("deactivating", "shuttingdown"),
+    "finalized": (),
+    "configuring": ("inactive", "unconfigured", "errorprocessing"),
+    "cleaningup": ("unconfigured", "inactive", "errorprocessing"),
+    "activating": ("active", "inactive", "errorprocessing"),
+    "deactivating": ("inactive", "active", "errorprocessing"),
+    "shuttingdown": ("finalized", "errorprocessing"),
+    "errorprocessing": ("unconfigured", "finalized"),
+}
+
+
+NO_TRANSITION = "no TransitionEvent goes"
+NO_LABEL = "is no lifecycle state label"
+
+
+def lifecycle_mismatch(start: str | None, goal: str | None) -> str | None:
+    """Why ``OnStateTransition(start_state=start, goal_state=goal)`` matches no TransitionEvent
+    (it compares the event's state labels with the strings given), or None."""
+    for what, label in (("start_state", start), ("goal_state", goal)):
+        if label is not None and label not in LIFECYCLE_STEPS:
+            return (f'its {what} "{label}" {NO_LABEL} (they are '
+                    f'{", ".join(sorted(LIFECYCLE_STEPS))}), and OnStateTransition compares labels')
+    if start is None or goal is None or goal in LIFECYCLE_STEPS[start]:
+        return None
+    via = [m for m in LIFECYCLE_STEPS[start] if goal in LIFECYCLE_STEPS[m]]
+    hint = f' (it passes through "{via[0]}": "{start}" -> "{via[0]}", then "{via[0]}" -> "{goal}")' if via else ""
+    return f'{NO_TRANSITION} from "{start}" to "{goal}"{hint}'
+
+
+
+def never_fires_help(why: str) -> str:
+    """The help of S102 for a handler that never fires because of ``why``
+    (``LaunchResult.never_started``)."""
+    if why == LATE_COMPLETION:
+        return "register the handler before its target action (put the RegisterEventHandler first in the " \
+               "launch description)"
+    if why.startswith(NO_TRANSITION):
+        return "give goal_state alone (the state the transition ends in), or a start_state and goal_state " \
+               "one step apart in the lifecycle state machine"
+    if NO_LABEL in why:
+        return "use a state label: unconfigured, inactive, active, finalized, or a transition state"
+    return "add the target action to the launch description, or register the handler under the same " \
+           "condition as its target"
+
+
 # What a handler of each event waits for, in messages ('"b" waits for start of "a"').
 EVENT_VERB = {"on_process_start": "start", "on_process_exit": "exit", "on_execution_complete": "completion",
               "on_state_transition": "a state transition"}

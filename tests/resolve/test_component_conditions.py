@@ -3,16 +3,17 @@ load request for every description without asking its condition; iron and later 
 (ros2/launch_ros#339). ``ComposableNodeContainer.execute`` filters its own descriptions by their
 conditions on every distro. On humble the component is therefore loaded whatever the condition
 says (L115 says so), and the rules see it loaded."""
-LOAD_YAML = """launch:
+CONTAINER = """launch:
   - arg: {name: teleop_stream, default: "false"}
   - node_container:
       pkg: rclcpp_components
       exec: component_container
       name: camera_container
       namespace: front
-  - load_composable_node:
-      target: /front/camera_container
-      composable_node:
+"""
+
+# two components of one name, the second behind a condition false by default
+COMPONENTS = """      composable_node:
         - pkg: image_proc
           plugin: image_proc::RectifyNode
           name: rectify
@@ -24,24 +25,9 @@ LOAD_YAML = """launch:
           if: $(var teleop_stream)
 """
 
-CONTAINER_YAML = """launch:
-  - arg: {name: teleop_stream, default: "false"}
-  - node_container:
-      pkg: rclcpp_components
-      exec: component_container
-      name: camera_container
-      namespace: front
-      composable_node:
-        - pkg: image_proc
-          plugin: image_proc::RectifyNode
-          name: rectify
-          namespace: front
-        - pkg: image_proc
-          plugin: image_proc::ResizeNode
-          name: rectify
-          namespace: front
-          if: $(var teleop_stream)
-"""
+LOAD_YAML = CONTAINER + "  - load_composable_node:\n      target: /front/camera_container\n" + COMPONENTS
+
+CONTAINER_YAML = CONTAINER + COMPONENTS
 
 LOAD_PY = """from launch import LaunchDescription
 from launch.actions import DeclareLaunchArgument

@@ -44,3 +44,38 @@ def test_lookups_that_surely_run_are_checked(demo_findings):
         (16, 'package "missing_description"'),
         (20, 'package "missing_found"'),
     ]
+
+
+MOVEIT = """
+from launch import LaunchDescription
+from launch.actions import OpaqueFunction
+from launch_ros.actions import Node
+from moveit_configs_utils import MoveItConfigsBuilder
+from moveit_configs_utils.moveit_configs_builder import MoveItConfigsBuilder as Builder
+
+
+def later(context):
+    MoveItConfigsBuilder('gone_in_function').to_moveit_configs()
+    return []
+
+
+def generate_launch_description():
+    arm = MoveItConfigsBuilder('arm').robot_description(file_path='config/arm.urdf.xacro').to_moveit_configs()
+    named = Builder('ignored', package_name='missing_named_config').to_dict()
+    fine = MoveItConfigsBuilder('anything', 'robot_description', 'demo').to_moveit_configs()
+    released = MoveItConfigsBuilder('moveit_resources_panda').to_moveit_configs()
+    return LaunchDescription([
+        OpaqueFunction(function=later),
+        Node(package='moveit_ros_move_group', executable='move_group', parameters=[arm.to_dict()]),
+    ])
+"""
+
+
+def test_moveit_configs_builder_looks_its_package_up(demo_findings):
+    # MoveItConfigsBuilder.__init__ -> ParameterBuilder.__init__: get_package_share_directory of
+    # package_name, else of robot_name + "_moveit_config", when the builder is made
+    found = demo_findings({"launch/m.launch.py": MOVEIT}, "launch/m.launch.py", "U101")
+    assert [(line, msg.split(" is not")[0]) for line, msg in found] == [
+        (15, 'package "arm_moveit_config"'),
+        (16, 'package "missing_named_config"'),
+    ]

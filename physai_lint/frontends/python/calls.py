@@ -330,6 +330,12 @@ _MULTI_ROBOT_POSE = ("nav2_common.launch.ParseMultiRobotPose",
                      "nav2_common.launch.parse_multirobot_pose.ParseMultiRobotPose")
 
 
+# moveit_configs_utils' builder: its constructor (ParameterBuilder.__init__) looks its package up
+# with get_package_share_directory, ``package_name`` or else ``robot_name + "_moveit_config"``.
+_MOVEIT_BUILDER = ("moveit_configs_utils.MoveItConfigsBuilder",
+                   "moveit_configs_utils.moveit_configs_builder.MoveItConfigsBuilder")
+
+
 def call_ref(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any], span: Span) -> Any:
     if qual.startswith("builtins."):
         return builtin_calls.call_builtin(ev, qual[9:], args, kwargs, span)
@@ -358,6 +364,8 @@ def call_ref(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any], 
         else:  # newer nav2_common: a substitution (LaunchConfiguration("robots")) performed later
             ev.escape([*args, *kwargs.values()])
         return Opaque(f"{qual.rsplit('.', 1)[-1]} reads the command line", span)
+    if qual in _MOVEIT_BUILDER:
+        _moveit_package(ev, args, kwargs, span)  # then the builder itself, like any unknown call
     if qual == "os.path.join":
         subst = next((a for a in args if symbolic.is_subst(a)), None)
         if subst is not None:
@@ -388,6 +396,18 @@ def call_ref(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any], 
         return Opaque("depends on the environment", span)
     ev.escape([*args, *kwargs.values()])
     return Opaque(f'call of "{qual}" cannot be evaluated statically', span)
+
+
+def _moveit_package(ev: Evaluator, args: list[Any], kwargs: dict[str, Any], span: Span) -> None:
+    """``MoveItConfigsBuilder(robot_name, robot_description="robot_description", package_name=None)``
+    finds its package when it is made (moveit_configs_builder.py :: MoveItConfigsBuilder.__init__,
+    ParameterBuilder.__init__): a lookup, as get_package_share_directory makes."""
+    pkg = kwargs["package_name"] if "package_name" in kwargs else args[2] if len(args) > 2 else None
+    if pkg is None:
+        robot = args[0] if args else kwargs.get("robot_name")
+        pkg = f"{robot}_moveit_config" if isinstance(robot, str) else None
+    if isinstance(pkg, (str, SymStr)) and pkg:
+        ev.lookup(FindPackage(to_value(pkg, span), "share", span, eager=True))  # type: ignore[arg-type]
 
 
 def read_text(ev: Evaluator, path: Any, span: Span) -> Any:

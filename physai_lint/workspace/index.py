@@ -533,7 +533,48 @@ def _rule_admits(rule: InstallRule, sub: str) -> bool:
     return True
 
 
+def _installed_elsewhere(pkg: WorkspacePackage, tail: str) -> str | None:
+    """How to fix a rule that installs the source file ``tail`` (relative to the package) to another
+    place of the install space: a directory installed with a trailing slash (its contents land in
+    the destination itself), a file sent to the wrong DESTINATION or data_files folder."""
+    source = f"{pkg.path}/{tail}"
+    share = f"share/{pkg.name}"
+    for rule in pkg.install_rules:
+        if rule.source is None:
+            continue
+        if rule.kind == "file":
+            if rule.source != source:
+                continue
+            put = posixpath.join(rule.dest, rule.rename or posixpath.basename(rule.source))
+        elif source.startswith(rule.source.rstrip("/") + "/"):
+            sub = source[len(rule.source.rstrip("/")) + 1:]
+            if not _rule_admits(rule, sub):
+                continue
+            base = rule.dest if rule.contents_only else posixpath.join(rule.dest, posixpath.basename(rule.source))
+            put = posixpath.join(base, sub)
+        else:
+            continue
+        if put == f"{share}/{tail}":
+            continue
+        where = f"{posixpath.basename(rule.origin)}:{rule.line}"
+        want = posixpath.dirname(f"{share}/{tail}")
+        if rule.kind == "directory" and rule.contents_only and rule.dest == share and \
+                f"{pkg.path}/{tail.split('/', 1)[0]}" == rule.source.rstrip("/"):
+            top = tail.split("/", 1)[0]
+            return (f'it is installed as "{put}" instead: install(DIRECTORY {top}/ ...) at {where} installs '
+                    f'what is in "{top}" (the trailing slash), not the folder; write "{top}" without the slash')
+        if rule.kind == "file" and pkg.build_type == "ament_python":
+            folder = ", ".join(["'share'", "package_name", *(repr(x) for x in want.split("/")[2:])])
+            return (f'it is installed as "{put}" instead (data_files at {where}): install it to '
+                    f"os.path.join({folder})")
+        return f'it is installed as "{put}" instead ({where}): install it to "{want}"'
+    return None
+
+
 def _install_hint(pkg: WorkspacePackage, tail: str) -> str:
+    elsewhere = _installed_elsewhere(pkg, tail)
+    if elsewhere is not None:
+        return elsewhere
     d = posixpath.dirname(tail)
     base = posixpath.basename(tail)
     top = tail.split("/", 1)[0]

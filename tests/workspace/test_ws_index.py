@@ -238,3 +238,39 @@ def test_index_speed_100_packages(tmp_path):
 def test_suggest_executable_taken_for_package(idx):
     assert idx.suggest("move_group")[0] == "moveit_ros_move_group"
     assert idx.suggest("rviz")[0] == "rviz2"
+
+
+def test_hint_names_where_a_file_is_installed_instead(idx, tmp_path):
+    share = idx.share_dir("cpp_pkg")
+    # install(DIRECTORY urdf/ DESTINATION share/${PROJECT_NAME}/robot): robot/robot.urdf, not urdf/
+    hint = idx.locate(share + "/urdf/robot.urdf").install_hint
+    assert hint.startswith('it is installed as "share/cpp_pkg/robot/robot.urdf" instead (CMakeLists.txt:')
+    assert hint.endswith('install it to "share/cpp_pkg/urdf"')
+    ws = tmp_path / "w"
+    xml = ('<package format="3"><name>{0}</name><version>0.0.0</version><description>d</description>'
+           '<maintainer email="m@example.com">m</maintainer><license>MIT</license>'
+           '<export><build_type>{1}</build_type></export></package>')
+    (ws / "src/c/config").mkdir(parents=True)
+    (ws / "src/c/package.xml").write_text(xml.format("c", "ament_cmake"))
+    (ws / "src/c/config/p.yaml").write_text("a: 1\n")
+    (ws / "src/c/CMakeLists.txt").write_text(
+        "cmake_minimum_required(VERSION 3.8)\nproject(c)\nfind_package(ament_cmake REQUIRED)\n"
+        "install(DIRECTORY config/ DESTINATION share/${PROJECT_NAME})\nament_package()\n")
+    (ws / "src/p/p/config").mkdir(parents=True)
+    (ws / "src/p/package.xml").write_text(xml.format("p", "ament_python"))
+    (ws / "src/p/config").mkdir()
+    (ws / "src/p/config/q.yaml").write_text("a: 1\n")
+    (ws / "src/p/setup.py").write_text(
+        "from glob import glob\nfrom setuptools import setup\npackage_name = 'p'\n"
+        "setup(name=package_name, data_files=[\n"
+        "    ('share/' + package_name, ['package.xml'] + glob('config/*.yaml')),\n])\n")
+    index = build_package_index(str(ws))
+    loc = index.locate(index.share_dir("c") + "/config/p.yaml")
+    assert loc.status == "not_installed"
+    assert loc.install_hint == (
+        'it is installed as "share/c/p.yaml" instead: install(DIRECTORY config/ ...) at CMakeLists.txt:4 '
+        'installs what is in "config" (the trailing slash), not the folder; write "config" without the slash')
+    loc = index.locate(index.share_dir("p") + "/config/q.yaml")
+    assert loc.status == "not_installed"
+    assert loc.install_hint == ('it is installed as "share/p/q.yaml" instead (data_files at setup.py:4): '
+                                "install it to os.path.join('share', package_name, 'config')")

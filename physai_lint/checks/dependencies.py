@@ -2,9 +2,10 @@
 from __future__ import annotations
 
 import functools
+import posixpath
 from collections.abc import Iterator
 
-from physai_lint.checks._util import ir_objects, python_facts
+from physai_lint.checks._util import ir_objects, python_facts, suggestion
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic
 from physai_lint.model.span import Span
@@ -196,7 +197,7 @@ def missing_file(ctx: CheckContext) -> Iterator[Diagnostic]:
                 rel = arg.split(f"/share/{pkg}/", 1)[1]
                 if loc.status == "missing":
                     msg = (f'file "{rel}" passed in the arguments of the node does not exist in package '
-                           f'"{pkg}" (it would be opened as "share/{pkg}/{rel}")')
+                           f'"{pkg}" (it would be opened as "share/{pkg}/{rel}"){_near_file(ctx, pkg, rel)}')
                     fix = f'check the path, or add "{rel}" to package "{pkg}" and install it'
                 else:
                     msg = (f'file "{rel}" passed in the arguments of the node exists in the sources of '
@@ -205,6 +206,41 @@ def missing_file(ctx: CheckContext) -> Iterator[Diagnostic]:
                                               "or setup.py data_files)"
                 yield Diagnostic("U104", span, msg, help=fix, key=f"{pkg}/{rel}")
     yield from _command_files(ctx, seen)
+    yield from _opened_files(ctx, seen)
+
+
+def _near_file(ctx: CheckContext, pkg: str, rel: str) -> str:
+    """"; did you mean ..." naming files of package ``pkg`` in the folder of ``rel`` whose name is
+    close, else ""."""
+    wp = ctx.packages.workspace_package(pkg)
+    folder = posixpath.dirname(rel)
+    close = suggestion(rel, [f for f in getattr(wp, "files", None) or () if posixpath.dirname(f) == folder])
+    return f"; {close}" if close else ""
+
+
+def _opened_files(ctx: CheckContext, seen: set[tuple[object, str]]) -> Iterator[Diagnostic]:
+    """Files a Python launch file opens while its description is built (``open(path)``,
+    ``Path(path).read_text()``), in a workspace package's share directory."""
+    for launch in ctx.launches:
+        for path, span in launch.opened_files:
+            pkg = _share_path(ctx, path)
+            if pkg is None or (span, path) in seen:
+                continue
+            loc = ctx.packages.locate(path)
+            if loc.status not in ("missing", "not_installed"):
+                continue
+            seen.add((span, path))
+            rel = path.split(f"/share/{pkg}/", 1)[1]
+            if loc.status == "missing":
+                msg = (f'file "{rel}" opened while the launch description is built does not exist in package '
+                       f'"{pkg}" (it would be opened as "share/{pkg}/{rel}"); launch fails with FileNotFoundError'
+                       f'{_near_file(ctx, pkg, rel)}')
+                fix = f'check the file name, or add "{rel}" to package "{pkg}" and install it'
+            else:
+                msg = (f'file "{rel}" opened while the launch description is built is in the sources of package '
+                       f'"{pkg}" but is not installed to "share/{pkg}/{rel}"; launch fails with FileNotFoundError')
+                fix = loc.install_hint or "add an install rule for it"
+            yield Diagnostic("U104", span, msg, help=fix, key=f"{pkg}/{rel}")
 
 
 def _known_share_path(ctx: CheckContext, join: PathJoin) -> tuple[str, str] | None:
@@ -245,7 +281,8 @@ def _command_files(ctx: CheckContext, seen: set[tuple[object, str]]) -> Iterator
                 seen.add((part.span, rel))
                 if loc.status == "missing":
                     msg = (f'file "{rel}" given to Command(...) does not exist in package "{pkg}" '
-                           f'(it would be opened as "share/{pkg}/{rel}"); the command fails at launch')
+                           f'(it would be opened as "share/{pkg}/{rel}"); the command fails at launch'
+                           f'{_near_file(ctx, pkg, rel)}')
                     fix = f'check the file name, or add "{rel}" to package "{pkg}" and install it'
                 else:
                     msg = (f'file "{rel}" given to Command(...) is in the sources of package "{pkg}" '

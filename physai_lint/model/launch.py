@@ -399,6 +399,11 @@ class PythonFacts:
     # span of the imported name; not those in a ``try`` body with handlers (a compatibility
     # fallback) or in code the evaluation never ran.
     imports: tuple[tuple[str, str, Span], ...] = ()
+    # Files opened for reading while the description is built (``open(path)``,
+    # ``Path(path).read_text()``) whose path is known only symbolically (a package's share
+    # directory), with the call's span; guarded as ``lookups`` are. A missing one raises
+    # FileNotFoundError there.
+    opens: tuple[tuple[Value, Span], ...] = ()
 
 
 @dataclass(frozen=True, slots=True)

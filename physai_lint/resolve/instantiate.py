@@ -196,8 +196,14 @@ class Instantiator:
     def lookups(self, lf: ir.LaunchFile, scope: Scope) -> None:
         """The package lookups building a Python file's description surely makes
         (``PythonFacts.lookups``): each package is looked up when the file is loaded."""
-        for value in lf.python.lookups if lf.python is not None else ():
+        if lf.python is None:
+            return
+        for value in lf.python.lookups:
             self.ev.eval(value, scope)
+        for value, span in lf.python.opens:
+            path = self.ev.eval(value, scope)
+            if path is not None:
+                self.result.opened_files.append((path, span))
 
     # ---- walking -----------------------------------------------------------------------------
     def _walk(self, actions: tuple[ir.Action, ...], scope: Scope) -> None:

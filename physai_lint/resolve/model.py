@@ -241,6 +241,9 @@ class LaunchResult:
     # Parts that may read any launch configuration (a parameter file with allow_substs whose
     # path is unknown): (span, the launch files from the entry down to the one holding it)
     open_reads: list[tuple[Span, tuple[str, ...]]] = field(default_factory=list)
+    # Files a Python launch file opens while its description is built (``PythonFacts.opens``),
+    # as evaluated here: (path, span of the call).
+    opened_files: list[tuple[str, Span]] = field(default_factory=list)
 
 
 fast_pickle_module(globals())  # tuples instead of dataclasses.fields() per object (model/pickling.py)

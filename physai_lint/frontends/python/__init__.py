@@ -139,7 +139,7 @@ def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | N
     tested = tuple(sorted(ev.tests.values(), key=lambda c: (c.span.line, c.span.col, c.how)))
     refused = tuple(sorted(ev.call_errors.values(), key=lambda c: (c.span.line, c.span.col)))
     facts = PythonFacts(calls, names, concats, has_gld, is_test, wrong, tuple(sorted(ev.escaped)), tested,
-                        refused, tuple(ev.lookups), imports)
+                        refused, tuple(ev.lookups), imports, tuple(ev.opens))
     launch = LaunchFile(path, "python", actions, python=facts, read_files=tuple(ev.read_files))
     convert_values.set_recorder(None)
     return FrontendResult(launch=launch, diagnostics=[])

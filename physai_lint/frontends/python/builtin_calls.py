@@ -60,6 +60,9 @@ def call_builtin(ev: Evaluator, name: str, args: list[Any], kwargs: dict[str, An
         return _containers(ev, name, args, kwargs, span, iterate, call_user)
     if name == "open":
         path = args[0] if args else kwargs.get("file")
+        mode = args[1] if len(args) > 1 else kwargs.get("mode", "r")
+        if isinstance(mode, str) and not set(mode) & set("wax+"):
+            ev.opened(path, span)
         return FileHandle(path if isinstance(path, str) else (path.path if isinstance(path, KPath) and isinstance(path.path, str) else None), span)
     if name in _PURE and is_concrete(list(args)) and is_concrete(kwargs):
         if name == "sorted" and "key" in kwargs:

@@ -511,6 +511,8 @@ def call_method(ev: Evaluator, obj: Any, name: str, args: list[Any], kwargs: dic
     if isinstance(obj, SymStr) and name in _SYM_STR_METHODS and not args and not kwargs:
         return SymStr((StrMethod(name, obj.value, span),))  # type: ignore[arg-type]
     if isinstance(obj, KPath):
+        if name in ("read_text", "read_bytes", "open") and not (name == "open" and (args or kwargs)):
+            ev.opened(obj, span)
         if name == "read_text":
             return read_text(ev, obj.path, span)
         if name == "joinpath":

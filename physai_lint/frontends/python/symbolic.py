@@ -52,11 +52,20 @@ class Recorder:
         # ``try`` body (the error may be caught), a function launch calls later (an OpaqueFunction,
         # an event handler's), or a branch the evaluator could not decide.
         self.lookups: list[Value] = []
+        self.opens: list[tuple[Value, Span]] = []
         self.guarded = 0
 
     def lookup(self, found: FindPackage) -> None:
         if not self.guarded and not getattr(self, "cond_stack", None):
             self.lookups.append((found,))
+
+    def opened(self, path: Any, span: Span) -> None:
+        """``open(path)`` / ``Path(path).read_text()`` of a path known only symbolically (in a
+        package's share directory): it surely runs unless ``guarded`` (``PythonFacts.opens``)."""
+        if isinstance(path, KPath):
+            path = path.path
+        if isinstance(path, SymStr) and not self.guarded and not getattr(self, "cond_stack", None):
+            self.opens.append((path.value, span))
 
     def escape(self, values: Any, depth: int = 0) -> None:
         """Note the launch configurations (by literal name) in ``values``: arguments of a call the

@@ -141,12 +141,39 @@ def _shadowed_rules(ctx: CheckContext) -> Iterator[Diagnostic]:
             key=f"{node.fqn}:{r.src}")
 
 
+def _foreign_prefix_rules(ctx: CheckContext) -> Iterator[Diagnostic]:
+    """A node's own ``node:from:=to`` rule whose prefix is not the node's name: rcl compares the
+    prefix with the node's final name (remap.c :: rcl_remap_first_match, given rcl_node_get_name),
+    and launch's ``-r __node:=<name>`` (``name=``) renames every node of the process, so no node
+    there has the prefix's name."""
+    seen: set[object] = set()
+    for _, node in all_nodes(ctx, include_inactive=False):
+        if node.kind == "process" or not node.name_explicit or not node.name:
+            continue
+        for r in node.remaps:
+            if r.origin != "node" or r.node_prefix is None or r.node_prefix == node.name or \
+                    r.src is None or r.src.startswith("__") or r.span in seen:
+                continue
+            seen.add(r.span)
+            yield Diagnostic(
+                "T102", r.span,
+                f'remap "{r.node_prefix}:{r.src}" -> "{r.dst}" never applies: it is only for a node named '
+                f'"{r.node_prefix}", and this node is named "{node.name}" (rcl matches the prefix against '
+                f'the node\'s final name)',
+                help=f'write the rule as "{r.src}:={r.dst}", or as "{node.name}:{r.src}:={r.dst}"',
+                key=f"{node.fqn}:{r.node_prefix}:{r.src}")
+
+
 @rule("T102", "unused-remap")
 def unused_remap(ctx: CheckContext) -> Iterator[Diagnostic]:
     seen: set[object] = set()
     for d in _shadowed_rules(ctx):
         seen.add(d.span)
         yield d
+    for d in _foreign_prefix_rules(ctx):
+        if d.span not in seen:
+            seen.add(d.span)
+            yield d
     # One remapping list written once and handed to several nodes (nav2's ('/tf', 'tf') list on
     # every server) is meant for whichever of them uses each rule: a rule is unused only when no
     # node it reaches uses it, or may use it (its interface unknown or not complete).

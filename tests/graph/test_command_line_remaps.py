@@ -99,3 +99,32 @@ def test_the_parse_follows_rcl() -> None:
     # an unknown argument where a flag would be may be -r: the rule after it may count
     assert rules([], [None, "k:=l"]) == [("k:=l", True)]
     assert rules([], ["-r", None]) == [(None, True)]
+
+
+PREFIXED = """from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='demo', executable='filter', name='announcer',
+             arguments=['--ros-args', '-r', 'filter:scan_filtered:=scan_clean']),
+        Node(package='demo', executable='filter', name='second',
+             remappings=[('second:scan_filtered', 'scan_clean'), ('other:x', 'y')]),
+        Node(package='demo', executable='filter',
+             arguments=['--ros-args', '-r', 'helper:scan_filtered:=scan_clean']),
+    ])
+"""
+
+
+def test_prefixed_rule_for_another_node_name_never_applies(tmp_path: Path, demo_nodes: Any) -> None:
+    # rcl_remap_first_match compares the prefix with the node's final name, and name= renames
+    # every node of the process (-r __node:=announcer): "filter:" matches none there. A node
+    # launch does not name may hold others (a manual composition): its prefixes are left alone.
+    found = [(line, msg) for code, line, msg in
+             _findings(tmp_path, demo_nodes, {"launch/p.launch.py": PREFIXED}, "launch/p.launch.py")
+             if code == "T102"]
+    assert [line for line, _ in found] == [8, 10]
+    assert found[0][1].startswith('remap "filter:scan_filtered" -> "scan_clean" never applies: it is only '
+                                  'for a node named "filter", and this node is named "announcer"')
+    assert '"other:x" -> "y" never applies' in found[1][1]

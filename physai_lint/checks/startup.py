@@ -16,12 +16,15 @@ from physai_lint.resolve.nodes import EVENT_VERB, never_fires_help
 def startup_cycle(ctx: CheckContext) -> Iterator[Diagnostic]:
     from physai_lint.graph.plan import startup_cycles
 
-    for span, text, steps, others in once(ctx, "trigger_cycles", lambda e: e[:2]):
+    for span, text, steps, others, lifecycle in once(ctx, "trigger_cycles", lambda e: e[:2]):
         yield Diagnostic(
             "S101", span,
-            f"startup cycle {text}: {steps}; each only starts from another's event handler, so "
-            "none of them ever starts",
-            help="add one of them to the launch description directly (it is the root of the chain)",
+            f"startup cycle {text}: {steps}; " + (
+                "the lifecycle node never changes state, so nothing waiting for its transitions runs"
+                if lifecycle else "each only starts from another's event handler, so none of them ever starts"),
+            help="request the first transition outside the cycle: emit its ChangeState at the top level, or "
+                 "from an OnProcessStart of the lifecycle node" if lifecycle else
+                 "add one of them to the launch description directly (it is the root of the chain)",
             related=tuple(Related(s, "handler in the cycle") for s in others),
             key=text)
     seen: set[object] = set()

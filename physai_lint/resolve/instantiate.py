@@ -120,6 +120,8 @@ class Instantiator:
         self.deferred_visits: set[str] = set()
         self.read_note = ""  # what ConfigReads made now are (``ConfigRead.note``)
         self.triggered: dict[str, tuple[ir.Action, list[tuple[tuple[str, str, Span], ...]]]] = {}
+        # lifecycle node action key -> (key, span) of the EmitEvent(ChangeState) actions naming it
+        self.change_requests: dict[str, list[tuple[str, Span]]] = {}
         # the files in which an action or include the linter cannot follow ran: it may have
         # declared or set any launch configuration their later reads ask for (includes and opaque
         # functions do not scope them). Reads in other files stay checked: in a large system
@@ -326,6 +328,8 @@ class Instantiator:
             if a.event in _CHANGE_STATE and self.frame.active is not False:
                 target = f"{self.frame.file}#{a.target_id}" if a.target_id else None
                 self.result.lifecycle_changes.append((target, a.span))
+                if target is not None:
+                    self.change_requests.setdefault(target, []).append((f"{self.frame.file}#{a.id}", a.span))
         elif isinstance(a, (ir.Log, ir.Shutdown)):
             for val in (getattr(a, "message", None), getattr(a, "reason", None)):
                 self.ev.eval(val, scope)

@@ -205,7 +205,8 @@ class LaunchResult:
     # Event handlers waiting on each other through an action that is no node (a TimerAction, a
     # GroupAction...), which the plan's node cycles cannot show: (the first handler's span, the
     # cycle as text, its steps as text, the other handlers' spans)
-    trigger_cycles: list[tuple[Span, str, str, tuple[Span, ...]]] = field(default_factory=list)
+    # (span, path, steps, other spans, through a lifecycle node's transitions)
+    trigger_cycles: list[tuple[Span, str, str, tuple[Span, ...], bool]] = field(default_factory=list)
     # Timers: (span, period seconds or None when unknown, raw period text)
     timers: list[tuple[Span, float | None, str]] = field(default_factory=list)
     # Packages referenced by FindPackageShare/$(find-pkg-share)/get_package_share_directory/...:

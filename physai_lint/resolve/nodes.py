@@ -564,6 +564,7 @@ class NodeBuilder:
         inst = self.inst
         started = set(inst.free)
         waiting = dict(inst.triggered)
+        self._transition_waits(waiting)
         changed = True
         while changed:  # an action starts once every target of one of its visits has
             changed = False
@@ -587,17 +588,51 @@ class NodeBuilder:
             if path is None:
                 continue
             done.update(path)
-            steps, spans = [], []
+            steps, spans, requests = [], [], []
             for a, b in zip(path, path[1:] + path[:1]):
                 event, span = graph[a][b]
-                steps.append(f"{self._label(a)} waits for {EVENT_VERB.get(event, event)} of {self._label(b)}")
-                spans.append(span)
+                if event == _CHANGE_REQUEST:
+                    steps.append(f"{self._label(a)} changes state only when {self._label(b)} requests it")
+                    requests.append(span)
+                else:
+                    steps.append(f"{self._label(a)} waits for {EVENT_VERB.get(event, event)} of {self._label(b)}")
+                    spans.append(span)
             text = " -> ".join(self._label(k) for k in [*path, path[0]])
-            order = sorted(set(spans), key=lambda s: (s.file, s.line, s.col))
-            inst.result.trigger_cycles.append((order[0], text, ", ".join(steps), tuple(order[1:])))
+            # reported at a handler of the cycle; the EmitEvents that request transitions are related
+            order = sorted(set(spans), key=lambda s: (s.file, s.line, s.col)) + \
+                sorted(set(requests) - set(spans), key=lambda s: (s.file, s.line, s.col))
+            inst.result.trigger_cycles.append((order[0], text, ", ".join(steps), tuple(order[1:]),
+                                               any(k.endswith("@transitions") for k in path)))
+
+    def _transition_waits(self, waiting: dict[str, Any]) -> None:
+        """Lifecycle state transitions the launch itself requests, as actions of ``waiting``: when
+        the launch emits ChangeState for a lifecycle node and nothing else manages it (a lifecycle
+        manager; a LifecycleTransition is opaque), its transitions come only from those
+        EmitEvents. An OnStateTransition handler for it then also waits for the transitions
+        (``<node key>@transitions``), which wait for an EmitEvent that does not itself wait for
+        them: the first transition cannot come from a handler of a later one."""
+        inst = self.inst
+        if not inst.change_requests or any(
+                (n.package, n.executable) in _LIFECYCLE_MANAGERS and n.active is not False
+                for n in inst.result.nodes):
+            return
+        for key, (action, visits) in list(waiting.items()):
+            extended = []
+            for visit in visits:
+                more = tuple((f"{t}@transitions", event, span) for t, event, span in visit
+                             if event == "on_state_transition" and t in inst.change_requests)
+                extended.append(visit + more)
+            waiting[key] = (action, extended)
+        for target, emits in inst.change_requests.items():
+            pseudo = f"{target}@transitions"
+            sources = [((ekey, _CHANGE_REQUEST, span),) for ekey, span in emits
+                       if not all(any(t[0] == pseudo for t in v) for v in waiting.get(ekey, (None, [()]))[1])]
+            waiting[pseudo] = (None, sources)
 
     def _label(self, key: str) -> str:
         """An action of a trigger cycle, for messages: a node by its name, else its class and line."""
+        if key.endswith("@transitions"):
+            return self._label(key[:-len("@transitions")])
         ids = self.by_action.get(key)
         if ids:
             n = self._node(ids[0])
@@ -661,6 +696,10 @@ def never_fires_help(why: str) -> str:
     return "add the target action to the launch description, or register the handler under the same " \
            "condition as its target"
 
+
+# A lifecycle node's transitions wait for an EmitEvent(ChangeState) (``_transition_waits``).
+_CHANGE_REQUEST = "change_request"
+_LIFECYCLE_MANAGERS = {("nav2_lifecycle_manager", "lifecycle_manager")}
 
 # What a handler of each event waits for, in messages ('"b" waits for start of "a"').
 EVENT_VERB = {"on_process_start": "start", "on_process_exit": "exit", "on_execution_complete": "completion",

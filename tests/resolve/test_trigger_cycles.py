@@ -64,3 +64,51 @@ def test_a_timer_in_the_description_is_the_root(demo_findings):
 
 def test_a_chain_from_a_started_node_is_no_cycle(demo_findings):
     assert _s101(demo_findings, CHAIN) == []
+
+
+LIFECYCLE = """from launch import LaunchDescription
+from launch.actions import EmitEvent, RegisterEventHandler
+from launch.event_handlers import OnProcessStart
+from launch.events import matches_action
+from launch_ros.actions import LifecycleNode, Node
+from launch_ros.event_handlers import OnStateTransition
+from launch_ros.events.lifecycle import ChangeState
+from lifecycle_msgs.msg import Transition
+
+
+def generate_launch_description():
+    lidar = LifecycleNode(package='demo', executable='lidar', name='lidar', namespace='')
+    relay = Node(package='demo', executable='relay', name='relay')
+    configure = EmitEvent(event=ChangeState(lifecycle_node_matcher=matches_action(lidar),
+                                            transition_id=Transition.TRANSITION_CONFIGURE))
+    activate = EmitEvent(event=ChangeState(lifecycle_node_matcher=matches_action(lidar),
+                                           transition_id=Transition.TRANSITION_ACTIVATE))
+    return LaunchDescription([
+        lidar,
+        RegisterEventHandler(OnProcessStart(target_action={first}, on_start=[configure])),
+        RegisterEventHandler(OnStateTransition(target_lifecycle_node=lidar, goal_state='inactive',
+                                               entities=[activate])),
+        RegisterEventHandler(OnStateTransition(target_lifecycle_node=lidar, goal_state='active',
+                                               entities=[relay])),{more}
+    ])
+"""
+
+
+def test_a_lifecycle_node_configured_only_by_what_its_transition_starts(demo_findings):
+    # the CONFIGURE request waits for the relay, which waits for the node to become active: the
+    # ACTIVATE request cannot come first (it waits for a transition itself)
+    ((line, message),) = _s101(demo_findings, LIFECYCLE.format(first="relay", more=""))
+    assert line == 20
+    assert message == (
+        'startup cycle "/lidar" -> EmitEvent (line 14) -> "/relay" -> "/lidar": "/lidar" changes state only '
+        'when EmitEvent (line 14) requests it, EmitEvent (line 14) waits for start of "/relay", "/relay" '
+        'waits for a state transition of "/lidar"; the lifecycle node never changes state, so nothing '
+        "waiting for its transitions runs")
+
+
+def test_a_lifecycle_node_configured_when_it_starts_is_no_cycle(demo_findings):
+    assert _s101(demo_findings, LIFECYCLE.format(first="lidar", more="")) == []
+    # a lifecycle manager may drive it instead of the launch's own requests
+    manager = ("\n        Node(package='nav2_lifecycle_manager', executable='lifecycle_manager', "
+               "parameters=[{'node_names': ['lidar'], 'autostart': True}]),")
+    assert _s101(demo_findings, LIFECYCLE.format(first="relay", more=manager)) == []

@@ -25,9 +25,12 @@ def duplicate_node_name(ctx: CheckContext) -> Iterator[Diagnostic]:
         for node in launch.nodes:
             # Only nodes certainly started under the analysed arguments: a condition that cannot be
             # evaluated (an unknown PythonExpression, say) often excludes the other node.
-            if node.kind == "process" or node.active is not True or not node.fqn or not _named(node):
+            if node.kind == "process" or node.active is not True or not _named(node):
                 continue
-            earlier = first.setdefault(node.fqn, [])
+            fqn = node.fqn or _anon_fqn(node)
+            if not fqn:
+                continue
+            earlier = first.setdefault(fqn, [])
             # Two components of one container are N107's; a component and a process, or
             # components of two containers, are two nodes of one name in the graph.
             others = [p for p in earlier if not _same_container(p, node)]
@@ -46,6 +49,19 @@ def duplicate_node_name(ctx: CheckContext) -> Iterator[Diagnostic]:
                 continue
             seen.add(span)
             p = prev
+            if node.fqn is None:  # both named $(anon ID)
+                first_at = p.spans.get("name", p.span)
+                shown = fqn.split("\0", 1)[0]
+                ident = shown.rsplit("$(anon ", 1)[1][:-1]
+                yield Diagnostic(
+                    "N101", span,
+                    f'node "{shown}" is launched twice (also at {line_ref(first_at, span)}): AnonName makes '
+                    f'the name for "{ident}" once and gives it to every $(anon {ident}) after it, so both '
+                    "get the same generated name; services, parameters and topics of the two collide",
+                    help=f"give each node its own id ($(anon {ident}_2)) or namespace",
+                    related=(Related(first_at, "first launched here"),),
+                    key=shown)
+                continue
             if "composable_node" in (node.kind, p.kind):
                 yield _component_twice(node, p, span)
                 continue
@@ -72,6 +88,14 @@ def duplicate_node_name(ctx: CheckContext) -> Iterator[Diagnostic]:
                 help="give each node its own name or namespace (PushRosNamespace / namespace=)",
                 related=(Related(first_at, "first launched here"),),
                 key=node.fqn)
+
+
+def _anon_fqn(node: NodeInstance) -> str | None:
+    """The name of a node named ``$(anon ID)``, as written (``/ns/$(anon rviz)``): nodes with the
+    same one get the same generated name (``NodeInstance.anon``)."""
+    if node.anon is None or not node.namespace:
+        return None
+    return names.join_fqn(node.namespace, f"$(anon {node.anon.rsplit('#', 1)[0]})") + "\0" + node.anon
 
 
 def _same_container(a: NodeInstance, b: NodeInstance) -> bool:

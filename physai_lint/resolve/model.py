@@ -124,6 +124,9 @@ class NodeInstance:
     name_source: str | None = None  # set when the name is the one its code gives it (interfaces/naming.py)
     namespace_source: str | None = None
     package_from_config: bool = False  # the package name came from a launch configuration
+    # A name given as "$(anon ID)" / AnonName(ID): "ID#k", equal for the nodes that get the same
+    # generated name (AnonName caches it per ID in launch_configurations['anon']); else None.
+    anon: str | None = None
 
 
 @fast_init

@@ -26,6 +26,7 @@ if TYPE_CHECKING:
     from physai_lint.resolve.instantiate import Instantiator
 
 NS, REMAPS, PARAMS = "ros_namespace", "ros_remaps", "global_params"
+_ANON = "\0anon"  # launch's launch_configurations['anon'] (``NodeBuilder._anon``)
 # rcl flags of a --ros-args section that take the next argument (rcl arguments.c)
 _VALUE_FLAGS = frozenset({"-p", "--param", "--params-file", "--log-level", "--log-config-file",
                           "--log-file-name", "-e", "--enclave"})
@@ -115,6 +116,7 @@ class NodeBuilder:
     def __init__(self, inst: Instantiator) -> None:
         self.inst = inst
         self.count = 0
+        self.anon_names: list[str] = []  # the AnonName keys given out (``_anon``)
         self.by_action: dict[str, list[str]] = {}  # "<file>#<action id>" -> node ids
         self.by_id: dict[str, NodeInstance] = {}  # every node registered, by id
         self.pending: list[tuple[str, str, str, Span, float | None]] = []  # key, node, reason, span, delay
@@ -132,6 +134,25 @@ class NodeBuilder:
         if value is None:
             return None, False
         return self.inst.ev.eval(value, scope), True
+
+    def _anon(self, value: v.Value | None, scope: Scope) -> str | None:
+        """``NodeInstance.anon`` of a name given as ``$(anon ID)`` alone. AnonName.perform keeps
+        the name it generates for ID in ``launch_configurations['anon']``, a dict made where it is
+        first needed: a scope pushed later copies the configurations shallowly and shares it, one
+        made inside a scope is dropped with that scope. Kept here under a key no launch
+        configuration can have, so the same sharing holds."""
+        if value is None or len(value) != 1 or not isinstance(value[0], v.Anon):
+            return None
+        ident = self.inst.ev.eval(value[0].name, scope)
+        if not ident:
+            return None
+        cache = scope.configs.get(_ANON)
+        if not isinstance(cache, dict):
+            cache = scope.configs[_ANON] = {}
+        if ident not in cache:
+            cache[ident] = f"{ident}#{len(self.anon_names) + 1}"
+            self.anon_names.append(cache[ident])
+        return str(cache[ident])
 
     def _namespace(self, raw: str | None, given: bool, scope: Scope) -> tuple[str | None, bool]:
         """(absolute namespace or None when unknown, whether launch specifies one)."""
@@ -357,6 +378,7 @@ class NodeBuilder:
                 name, name_given = rename.dst, True
         namespace, ns_specified = self._namespace(ns_raw, ns_given, scope)
         fqn = names.join_fqn(namespace, name) if (namespace and name) else None
+        anon = self._anon(a.name, scope) if name is None else None
         node_id = self._id()
         remaps, gparams = self._global_sources(scope, node_id, a.span, a.parameters)
         key = fqn if (keyed and ns_specified and fqn) else "/**"
@@ -368,7 +390,7 @@ class NodeBuilder:
             span=a.span, file=fr.file, action=a, action_id=f"{fr.file}#{a.id}",
             include_chain=fr.chain[:-1], name_explicit=name_given, namespace_explicit=ns_specified,
             arguments=args, in_timer=fr.deferred is not None, timer_lost=fr.lost,
-            spans={k: s for k, s in a.field_spans}, package_from_config=package_from_config,
+            spans={k: s for k, s in a.field_spans}, package_from_config=package_from_config, anon=anon,
         )
         self._register(inst_, inst_.action_id)
         for value in a.other:

@@ -92,6 +92,53 @@ def no_match(ctx: CheckContext) -> Iterator[Diagnostic]:
             yield _whole_file(path, model, users)
         elif all(n.fqn is not None for n, _ in readers[path]):
             yield from _stray_keys(path, model, users, keys, readers[path])
+    yield from _rewritten_no_match(ctx, readers)
+
+
+def _rewritten_no_match(ctx: CheckContext, readers: dict[str, list[Any]]) -> Iterator[Diagnostic]:
+    """A workspace file that active nodes read only through files a substitution writes from it
+    (nav2_common RewrittenYaml: its ``root_key`` nests every key under it), when no written key
+    matches any of them: each gets none of its parameters (rcl matches the written keys). A
+    file some node reads as it is is the plain check's (``no_match``)."""
+    from physai_lint.params.effective import matching_keys
+
+    for path, users in sorted(readers.items()):
+        active = [(n, s) for n, s in users if n.active is not False]
+        if not active or any(s.source == path or s.model is None or n.fqn is None for n, s in active):
+            continue
+        if any(matching_keys(n.fqn, s.model, _by_launch_ros(n, s)) for n, s in active):
+            continue
+        model = active[0][1].model
+        mine = [(n, s) for n, s in active if s.model is model]
+        if not model.blocks:
+            continue
+        roots = {b.key.split("/", 1)[0] for b in model.blocks}
+        if len(roots) == 1 and all(b.nested and "/" in b.key for b in model.blocks):
+            yield _under_root(path, model, mine, roots.pop())
+        else:
+            yield _whole_file(path, model, mine, written=True)
+
+
+def _under_root(path: str, model: Any, users: list[tuple[Any, Any]], root: str) -> Diagnostic:
+    """``_whole_file`` for a written file whose keys all sit under one root key (RewrittenYaml's
+    ``root_key``) that the loading nodes' namespace does not have."""
+    block, (_, src) = _closest_pair(_in_source_order(model.blocks), users)
+    fqns = ", ".join(sorted({f'"{n.fqn}"' for n, _ in users}))
+    spaces = ", ".join(sorted({f'"{n.namespace}"' for n, _ in users}))
+    return Diagnostic(
+        "P103", block.key_span,
+        f'no node key of the file written from "{_rel(path)}" matches the node(s) that load it ({fqns}): '
+        f'its writer (RewrittenYaml\'s root_key "{root}") nests every key under "{root}" ("{block.key}" '
+        f"matches /{block.key} only), and the nodes run in {spaces}; the whole file is silently ignored",
+        help=(f'give root_key only where the nodes run in namespace "/{root}" (nav2 gives it with '
+              "use_namespace:=true), or push that namespace for them"),
+        related=(Related(src.span, "loaded here"),),
+        key=f"{_rel(path)}:{block.key}")
+
+
+def _in_source_order(blocks: list[Any]) -> list[Any]:
+    """A written file's keys in the order of its source's (the writer may sort them)."""
+    return sorted(blocks, key=lambda b: (b.key_span.file, b.key_span.line, b.key_span.col))
 
 
 def _by_launch_ros(node: Any, src: Any) -> bool:
@@ -101,15 +148,17 @@ def _by_launch_ros(node: Any, src: Any) -> bool:
     return bool(node.kind == "composable_node" and src.origin != "forwarded")
 
 
-def _whole_file(path: str, model: Any, users: list[tuple[Any, Any]]) -> Diagnostic:
-    """No key of the file matches any node that loads it."""
+def _whole_file(path: str, model: Any, users: list[tuple[Any, Any]], written: bool = False) -> Diagnostic:
+    """No key of the file matches any node that loads it (``written``: of the file a substitution
+    writes from it, whose keys are shown as written)."""
     from physai_lint.params.match import explain_for, key_help
 
-    block, (node, src) = _closest_pair(model.blocks, users)
+    block, (node, src) = _closest_pair(_in_source_order(model.blocks) if written else model.blocks, users)
     fqns = ", ".join(sorted({f'"{n.fqn}"' for n, _ in users}))
+    what = f'the file written from "{_rel(path)}" (as "{block.key}")' if written else f'"{_rel(path)}"'
     return Diagnostic(
         "P103", block.key_span,
-        f'no node key of "{_rel(path)}" matches the node(s) that load it ({fqns}): '
+        f'no node key of {what} matches the node(s) that load it ({fqns}): '
         f"{explain_for(block.key, node)}; the whole file is silently ignored"
         f"{name_note(n for n, _ in users)}",
         help=key_help(node, whole=True),

@@ -267,3 +267,20 @@ def test_spawner_labels_name_the_controllers_not_the_options_values() -> None:
     assert label("-c", None, "jsb") is None  # an option's value unknown: where the names start is too
     # other executables: the first positional argument, as before
     assert first_positional(("-c", "/controller_manager", "jsb")) == "controller_manager"
+
+
+def test_nodes_behind_a_trigger_cycle_never_start(tmp_path, demo_package) -> None:
+    """A node started only from the handler of a lifecycle node's transition, when that node is
+    configured only once the node has started, never starts (S101 through the transitions): the
+    plan marks it and says why."""
+    from tests.resolve.test_trigger_cycles import LIFECYCLE
+
+    demo_package({"launch/a.launch.py": LIFECYCLE.format(first="relay", more="")})
+    opts = CheckOptions(paths=[], workspace=str(tmp_path))
+    data = json.loads(plan(opts, "src/demo/launch/a.launch.py", "json", cwd=str(tmp_path)))
+    assert {v["fqn"]: v["never_starts"] for v in data["vertices"]} == {"/lidar": False, "/relay": True}
+    assert [(n["line"], n["message"].split(":")[0]) for n in data["never_started"]] == [
+        (20, 'startup cycle "/lidar" -> EmitEvent (line 14) -> "/relay" -> "/lidar"')]
+    demo_package({"launch/a.launch.py": LIFECYCLE.format(first="lidar", more="")})
+    data = json.loads(plan(opts, "src/demo/launch/a.launch.py", "json", cwd=str(tmp_path)))
+    assert not any(v["never_starts"] for v in data["vertices"]) and data["never_started"] == []

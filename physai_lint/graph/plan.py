@@ -339,6 +339,14 @@ def _skeleton(launch: LaunchResult, effective_params: Callable[[NodeInstance], d
     startable = _startable(ids | off, hard + dead, {**dict.fromkeys(off, False), **{n.id: n.active for n in nodes}})
     startable &= ids
     plan.never_starts = ids - startable
+    # nodes only an action that never starts would start (a cycle through a TimerAction, a
+    # GroupAction or a lifecycle node's transitions: LaunchResult.trigger_cycles)
+    blocked = set(launch.blocked) & ids
+    if blocked:
+        plan.never_starts |= blocked
+        startable -= blocked
+        plan.never_started.extend((span, f"startup cycle {text}: {steps}")
+                                  for span, text, steps, _, _ in launch.trigger_cycles)
     return plan, ids, hard, startable
 
 

@@ -210,6 +210,9 @@ class LaunchResult:
     # cycle as text, its steps as text, the other handlers' spans)
     # (span, path, steps, other spans, through a lifecycle node's transitions)
     trigger_cycles: list[tuple[Span, str, str, tuple[Span, ...], bool]] = field(default_factory=list)
+    # Nodes that never start: every event handler that starts them waits, in the end, for one of
+    # those trigger cycles (or for an action that never starts); their ids.
+    blocked: list[str] = field(default_factory=list)
     # Timers: (span, period seconds or None when unknown, raw period text)
     timers: list[tuple[Span, float | None, str]] = field(default_factory=list)
     # Packages referenced by FindPackageShare/$(find-pkg-share)/get_package_share_directory/...:

@@ -595,6 +595,8 @@ class NodeBuilder:
                     started.add(key)
                     del waiting[key]
                     changed = True
+        inst.result.blocked.extend(nid for key in sorted(waiting) for nid in self.by_action.get(key, ())
+                                   if self._node(nid).active is not False)
         graph: dict[str, dict[str, tuple[str, Span]]] = {}
         for key, (_, visits) in waiting.items():
             for visit in visits:

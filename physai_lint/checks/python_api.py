@@ -178,6 +178,14 @@ def _wrong_type_text(f: TypeFact) -> tuple[str, str]:
         message = (f"{f.call} is given the {f.type} {f.value}, where launch accepts only a string or "
                    f"substitutions; it raises \"TypeError: '{f.type}' object is not iterable\"")
         return message, f"write it as a string such as {example}"
+    if f.kind == "part":
+        article = "an" if f.type[:1] in "aeiou" else "a"
+        message = (f"{f.call} is given {f.value}, {article} {f.type}, as one of its parts; launch accepts only "
+                   "strings and substitutions there and raises \"TypeError: Failed to normalize given item "
+                   f"of type '<class '{f.type}'>'\" when the description is built")
+        help_ = ("a list inside the list is no substitution: write its parts into the outer list (its "
+                 "parts are concatenated)" if f.type in ("list", "tuple") else "write it as a string")
+        return message, help_
     name = f.call.split("(", 1)[1].split("=", 1)[0]  # the keyword: "Node(shell=...)" -> "shell"
     if f.kind == "plain-bool":
         what = "a substitution object" if f.type == "substitution" else "a non-empty string"

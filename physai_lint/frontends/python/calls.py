@@ -17,7 +17,7 @@ from physai_lint.model.span import Span
 from physai_lint.model.values import FindPackage, LaunchConfig, StrMethod, Text, Unknown, Value
 
 from . import api, bounds, builtin_calls, classes, symbolic
-from .convert_values import to_value
+from .convert_values import span_at, to_value
 from .runtime import (
     BoundMethod,
     BoundUser,
@@ -574,6 +574,25 @@ def _safe(fn: Any, args: list[Any], kwargs: dict[str, Any], span: Span) -> Any:
         return Opaque("operation fails statically", span)
 
 
+# Substitutions whose constructor runs normalize_to_list_of_substitutions over a list argument:
+# each item must be a str or a Substitution, else it raises TypeError when the description is built
+# (launch.utilities.normalize_to_list_of_substitutions, humble to rolling). Not PathJoinSubstitution:
+# since ros2/launch#838 (kilted, backported in 2025) each of its items may be a list to concatenate.
+_SUBSTITUTION_LISTS = {"Command": "command", "PythonExpression": "expression", "FindExecutable": "name",
+                       "EnvironmentVariable": "name", "LaunchConfiguration": "variable_name"}
+
+
+def _check_parts(ev: Evaluator, obj: LObj, short: str) -> None:
+    name = _SUBSTITUTION_LISTS[short]
+    items = obj.arg(0, name)
+    if not isinstance(items, (list, tuple)):
+        return
+    span = obj.arg_span(0, name)
+    for k, item in enumerate(items):
+        if isinstance(item, (list, tuple, dict)) or type(item) in (int, float, bool):
+            ev.wrong_type("part", f"{short}({name}=[...])", item, span_at(items, k, span))
+
+
 def make_lobj(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any], node: ast.Call,
               scope: Scope, arg_spans: list[Span], kw_spans: dict[str, Span]) -> Any:
     mod = scope.module or ev.main
@@ -587,6 +606,8 @@ def make_lobj(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any],
         if isinstance(v, (dict, list, tuple)):
             ev.kw_kinds[(id(node), k)] = type(v).__name__
     short = api.short(qual)
+    if short in _SUBSTITUTION_LISTS and api.is_substitution(qual):
+        _check_parts(ev, obj, short)
     if qual == "launch.LaunchDescription":
         init = obj.arg(0, "initial_entities")
         obj.extra["entities"] = list(init) if isinstance(init, (list, tuple)) else ([] if init is None else [init])

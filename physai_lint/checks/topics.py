@@ -148,7 +148,8 @@ def _foreign_prefix_rules(ctx: CheckContext) -> Iterator[Diagnostic]:
     there has the prefix's name."""
     seen: set[object] = set()
     for _, node in all_nodes(ctx, include_inactive=False):
-        if node.kind == "process" or not node.name_explicit or not node.name:
+        # a container's own rules reach the components that forward its global arguments
+        if node.kind in ("process", "container") or not node.name_explicit or not node.name:
             continue
         for r in node.remaps:
             if r.origin != "node" or r.node_prefix is None or r.node_prefix == node.name or \

@@ -10,7 +10,9 @@ from physai_lint.checks._util import CONTAINER_EXECUTABLES, command_words, did_y
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.graph.plan import SPAWNER_VALUE_OPTIONS
 from physai_lint.model.findings import Diagnostic, Related
+from physai_lint.model.launch import NodeAction
 from physai_lint.resolve.model import (
+    LIFECYCLE_MANAGERS,
     LaunchResult,
     NodeInstance,
     ResolvedParamDict,
@@ -18,7 +20,7 @@ from physai_lint.resolve.model import (
 )
 from physai_lint.resolve.names import expand_topic_name
 
-MANAGERS = {("nav2_lifecycle_manager", "lifecycle_manager")}
+MANAGERS = LIFECYCLE_MANAGERS
 
 
 def managers(ctx: CheckContext, launch: LaunchResult) -> Iterator[tuple[NodeInstance, list[str], Any]]:
@@ -158,7 +160,11 @@ def _is_lifecycle(ctx: CheckContext, node: NodeInstance) -> bool:
 
 
 def _autostarts(ctx: CheckContext, node: NodeInstance) -> bool:
-    """The node is given ``autostart: true`` (drivers that configure and activate themselves)."""
+    """The node is given ``autostart: true`` (drivers that configure and activate themselves), or
+    its ``LifecycleNode`` is given ``autostart=`` (launch_ros since jazzy: launch brings it up)."""
+    action = node.action
+    if isinstance(action, NodeAction) and any(k == "autostart" for k, _ in action.field_spans):
+        return True
     ep = effective(ctx, node).get("autostart")
     return ep is not None and ep.value is True
 

@@ -36,6 +36,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
+from physai_lint.resolve.model import LIFECYCLE_MANAGERS
 from physai_lint.resolve.roots import nodes_on_cycles
 
 if TYPE_CHECKING:
@@ -44,8 +45,7 @@ if TYPE_CHECKING:
     from physai_lint.resolve.model import LaunchResult, NodeInstance
 
 MAX_CYCLES = 50
-MANAGERS = {("nav2_lifecycle_manager", "lifecycle_manager"),
-            ("nav2_lifecycle_manager", "nav2_lifecycle_manager::LifecycleManager")}
+MANAGERS = LIFECYCLE_MANAGERS
 HANDLER_REASONS = ("on_process_start", "on_process_exit", "on_execution_complete",
                    "on_state_transition")
 IGNORED_TOPICS = ("/rosout", "/parameter_events")

@@ -13,6 +13,9 @@ from physai_lint.model.pickling import fast_init, fast_pickle_module
 from physai_lint.model.span import Span
 
 Activity = Union[bool, None]  # True, False, or None for unknown
+# nav2's lifecycle manager, as a process and as a component: (package, executable or plugin)
+LIFECYCLE_MANAGERS = frozenset({("nav2_lifecycle_manager", "lifecycle_manager"),
+                                ("nav2_lifecycle_manager", "nav2_lifecycle_manager::LifecycleManager")})
 NodeKind = Literal["node", "lifecycle_node", "container", "composable_node", "process"]
 
 # A parameter value as launch hands it over: bool, int, float, str, or a homogeneous list of those.

@@ -11,6 +11,7 @@ from physai_lint.model.span import Span
 from physai_lint.resolve import names
 from physai_lint.resolve.evaluate import TRUE_WORDS, Scope
 from physai_lint.resolve.model import (
+    LIFECYCLE_MANAGERS,
     EffRemap,
     NodeInstance,
     ParamSourceR,
@@ -637,7 +638,7 @@ class NodeBuilder:
         them: the first transition cannot come from a handler of a later one."""
         inst = self.inst
         if not inst.change_requests or any(
-                (n.package, n.executable) in _LIFECYCLE_MANAGERS and n.active is not False
+                (n.package, n.executable) in LIFECYCLE_MANAGERS and n.active is not False
                 for n in inst.result.nodes):
             return
         for key, (action, visits) in list(waiting.items()):
@@ -648,6 +649,10 @@ class NodeBuilder:
                 extended.append(visit + more)
             waiting[key] = (action, extended)
         for target, emits in inst.change_requests.items():
+            if any(isinstance(self._node(i).action, ir.NodeAction) and
+                   any(k == "autostart" for k, _ in self._node(i).action.field_spans)  # type: ignore[union-attr]
+                   for i in self.by_action.get(target, ())):
+                continue  # LifecycleNode(autostart=True) (jazzy on) brings itself up
             pseudo = f"{target}@transitions"
             sources = [((ekey, _CHANGE_REQUEST, span),) for ekey, span in emits
                        if not all(any(t[0] == pseudo for t in v) for v in waiting.get(ekey, (None, [()]))[1])]
@@ -723,7 +728,6 @@ def never_fires_help(why: str) -> str:
 
 # A lifecycle node's transitions wait for an EmitEvent(ChangeState) (``_transition_waits``).
 _CHANGE_REQUEST = "change_request"
-_LIFECYCLE_MANAGERS = {("nav2_lifecycle_manager", "lifecycle_manager")}
 
 # What a handler of each event waits for, in messages ('"b" waits for start of "a"').
 EVENT_VERB = {"on_process_start": "start", "on_process_exit": "exit", "on_execution_complete": "completion",

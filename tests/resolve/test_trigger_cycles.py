@@ -112,3 +112,10 @@ def test_a_lifecycle_node_configured_when_it_starts_is_no_cycle(demo_findings):
     manager = ("\n        Node(package='nav2_lifecycle_manager', executable='lifecycle_manager', "
                "parameters=[{'node_names': ['lidar'], 'autostart': True}]),")
     assert _s101(demo_findings, LIFECYCLE.format(first="relay", more=manager)) == []
+
+
+def test_an_autostarted_lifecycle_node_brings_itself_up(demo_findings):
+    # LifecycleNode(autostart=True) (launch_ros since jazzy) configures and activates itself
+    text = LIFECYCLE.format(first="relay", more="").replace("namespace='')", "namespace='', autostart=True)")
+    assert "autostart=True" in text
+    assert _s101(demo_findings, text) == []

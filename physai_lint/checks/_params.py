@@ -51,11 +51,13 @@ def declarations(ctx: CheckContext, node: Any, iface: Any, params: dict[str, Any
     return lookup
 
 
-def fully_known(ctx: CheckContext, node: Any, params: dict[str, Any]) -> bool:
-    """Every parameter source of the node is statically known, so "unset" really is unset."""
+def fully_known(ctx: CheckContext, node: Any, params: dict[str, Any], values: bool = True) -> bool:
+    """Every parameter source of the node is statically known, so "unset" really is unset.
+    ``values`` False: the names are enough (a parameter whose value is not known still names
+    itself)."""
     from physai_lint.resolve.model import ResolvedParamFile, UnknownParams
 
-    if node.fqn is None or any(not ep.certain for ep in params.values()):
+    if node.fqn is None or (values and any(not ep.certain for ep in params.values())):
         return False
     for src in node.param_sources:
         if isinstance(src, UnknownParams):
@@ -65,7 +67,7 @@ def fully_known(ctx: CheckContext, node: Any, params: dict[str, Any]) -> bool:
                 ctx.param_files.get(src.source or "") or ctx.param_files.get(src.path or ""))
             if model is None or not model.ok:
                 return False
-        if any(getattr(p, "value", 0) is None for p in getattr(src, "params", ())):
+        if values and any(getattr(p, "value", 0) is None for p in getattr(src, "params", ())):
             return False
     return True
 

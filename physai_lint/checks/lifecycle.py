@@ -341,8 +341,10 @@ def controller_type_not_set(ctx: CheckContext) -> Iterator[Diagnostic]:
 
 
 def _all_sources_read(ctx: CheckContext, node: NodeInstance, params: dict[str, Any]) -> bool:
-    """Every parameter source of the controller manager is known and read (a missing file is
-    P101's: the types it would have given are not reported again here)."""
+    """Every parameter source of the controller manager is known and read, so the names it is
+    given are all known (a missing file is P101's: the types it would have given are not reported
+    again here). A value that is not known (robot_description from xacro) names its parameter all
+    the same: it cannot be a controller's type."""
     if any(isinstance(s, ResolvedParamFile) and s.status == "missing" for s in node.param_sources):
         return False
-    return fully_known(ctx, node, params)
+    return fully_known(ctx, node, params, values=False)

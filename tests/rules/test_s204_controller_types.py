@@ -103,3 +103,18 @@ def test_only_a_ros2_command_loads_controllers(demo_findings: Any):
     # "control load_controller x ros2": not the ros2 CLI (the word before "control" is not ros2)
     assert _check(demo_findings, """        ExecuteProcess(cmd=['control', 'load_controller', 'gripper', 'ros2']),
 """) == []
+
+
+def test_a_robot_description_of_unknown_value_still_names_only_itself(demo_findings: Any):
+    # the ros2_control idiom: the URDF from xacro is known only at launch time, but the dict
+    # sets robot_description alone, never a controller's type
+    head = HEAD.replace(
+        "parameters=[controllers])",
+        "parameters=[{'robot_description': ParameterValue(Command(['xacro ', 'robot.urdf.xacro']), "
+        "value_type=str)}, controllers])").replace(
+        "from launch_ros.substitutions import FindPackageShare",
+        "from launch_ros.substitutions import FindPackageShare\nfrom launch.substitutions import Command\n"
+        "from launch_ros.parameter_descriptions import ParameterValue")
+    found = _check(demo_findings, """        Node(package='controller_manager', executable='spawner', arguments=['arm_controller']),
+""", head=head)
+    assert [message.split(" but")[0] for _, message in found] == ['spawner loads controller "arm_controller"']

@@ -162,9 +162,8 @@ def _is_lifecycle(ctx: CheckContext, node: NodeInstance) -> bool:
 def _autostarts(ctx: CheckContext, node: NodeInstance) -> bool:
     """The node is given ``autostart: true`` (drivers that configure and activate themselves), or
     its ``LifecycleNode`` is given ``autostart=`` (launch_ros since jazzy: launch brings it up)."""
-    action = node.action
-    if isinstance(action, NodeAction) and any(k == "autostart" for k, _ in action.field_spans):
-        return True
+    if isinstance(node.action, NodeAction) and node.action.autostart is not False:
+        return True  # true, or not known
     ep = effective(ctx, node).get("autostart")
     return ep is not None and ep.value is True
 

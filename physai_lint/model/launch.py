@@ -203,6 +203,10 @@ class NodeAction(ActionBase):
     # Other values launch substitutes when the node runs (output, respawn, prefix, cwd,
     # environment): no rule looks at them, but the launch configurations they read are read.
     other: tuple[Value, ...] = ()
+    # ``LifecycleNode(autostart=...)`` (launch_ros since jazzy: ``if self.node_autostart`` it
+    # configures and activates the node itself): False when not given or false, None when its
+    # value is not known.
+    autostart: bool | None = False
 
     def span_of(self, field_name: str) -> Span:
         for key, span in self.field_spans:

@@ -637,7 +637,8 @@ class NodeBuilder:
         (``<node key>@transitions``), which wait for an EmitEvent that does not itself wait for
         them: the first transition cannot come from a handler of a later one."""
         inst = self.inst
-        if not inst.change_requests or any(
+        # a ChangeState whose target is not known (matches_node_name, a lambda) may be any node's
+        if not inst.change_requests or any(t is None for t, _ in inst.result.lifecycle_changes) or any(
                 (n.package, n.executable) in LIFECYCLE_MANAGERS and n.active is not False
                 for n in inst.result.nodes):
             return
@@ -650,7 +651,7 @@ class NodeBuilder:
             waiting[key] = (action, extended)
         for target, emits in inst.change_requests.items():
             if any(isinstance(self._node(i).action, ir.NodeAction) and
-                   any(k == "autostart" for k, _ in self._node(i).action.field_spans)  # type: ignore[union-attr]
+                   self._node(i).action.autostart is not False  # type: ignore[union-attr]
                    for i in self.by_action.get(target, ())):
                 continue  # LifecycleNode(autostart=True) (jazzy on) brings itself up
             pseudo = f"{target}@transitions"

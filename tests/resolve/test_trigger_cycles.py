@@ -119,3 +119,22 @@ def test_an_autostarted_lifecycle_node_brings_itself_up(demo_findings):
     text = LIFECYCLE.format(first="relay", more="").replace("namespace='')", "namespace='', autostart=True)")
     assert "autostart=True" in text
     assert _s101(demo_findings, text) == []
+
+
+def test_a_change_request_of_unknown_target_may_bring_any_node_up(demo_findings, tmp_path):
+    # ChangeState(lifecycle_node_matcher=matches_node_name('/lidar')): no action is named, so the
+    # request may configure the node; neither S101 nor the plan may say the relay never starts
+    import json
+
+    from physai_lint.api_plan import plan
+    from physai_lint.engine import CheckOptions
+
+    text = LIFECYCLE.format(first="relay", more="""
+        EmitEvent(event=ChangeState(lifecycle_node_matcher=matches_node_name('/lidar'),
+                                    transition_id=Transition.TRANSITION_CONFIGURE)),""").replace(
+        "from launch_ros.events.lifecycle import ChangeState",
+        "from launch_ros.events.lifecycle import ChangeState, matches_node_name")
+    assert _s101(demo_findings, text) == []
+    data = json.loads(plan(CheckOptions(paths=[], workspace=str(tmp_path)), "src/demo/launch/a.launch.py",
+                           "json", cwd=str(tmp_path)))
+    assert not any(v["never_starts"] for v in data["vertices"])

@@ -397,7 +397,7 @@ class ActionBuilder:
             self._list_values(kw.get("arguments"), o.arg_span(-1, "arguments")),
             self._list_values(kw.get("ros_arguments"), o.arg_span(-1, "ros_arguments")),
             self._composables(kw.get("composable_node_descriptions"), s) if kind == "container" else (),
-            fields, opt_value(o, -1, "exec_name"), self._other(o))
+            fields, opt_value(o, -1, "exec_name"), self._other(o), _autostart(kw))
 
     def _other(self, o: LObj) -> tuple[Value, ...]:
         """Process arguments launch substitutes that no rule models (``NodeAction.other``)."""
@@ -498,3 +498,14 @@ def _distinct(values: tuple[Any, ...]) -> tuple[Any, ...]:
         if v not in out:
             out.append(v)
     return tuple(out)
+
+
+def _autostart(kw: dict[str, Any]) -> bool | None:
+    """``NodeAction.autostart``: launch_ros tests the value's truth (a substitution object is
+    true); None when the value is not known."""
+    if "autostart" not in kw:
+        return False
+    v = kw["autostart"]
+    if isinstance(v, Opaque):
+        return None
+    return bool(v)

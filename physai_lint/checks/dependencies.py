@@ -4,6 +4,7 @@ from __future__ import annotations
 import functools
 import posixpath
 from collections.abc import Iterator
+from typing import Any
 
 from physai_lint.checks._util import ir_objects, python_facts, suggestion
 from physai_lint.checks.base import CheckContext, rule
@@ -195,18 +196,27 @@ def missing_file(ctx: CheckContext) -> Iterator[Diagnostic]:
                     continue
                 seen.add((span, arg))
                 rel = arg.split(f"/share/{pkg}/", 1)[1]
-                if loc.status == "missing":
-                    msg = (f'file "{rel}" passed in the arguments of the node does not exist in package '
-                           f'"{pkg}" (it would be opened as "share/{pkg}/{rel}"){_near_file(ctx, pkg, rel)}')
-                    fix = f'check the path, or add "{rel}" to package "{pkg}" and install it'
-                else:
-                    msg = (f'file "{rel}" passed in the arguments of the node exists in the sources of '
-                           f'package "{pkg}" but is not installed to "share/{pkg}/{rel}"')
-                    fix = loc.install_hint or "add an install rule for it (CMake install(DIRECTORY ...) " \
-                                              "or setup.py data_files)"
-                yield Diagnostic("U104", span, msg, help=fix, key=f"{pkg}/{rel}")
+                yield _file_problem(ctx, span, pkg, rel, loc, "passed in the arguments of the node",
+                                    check="path", present="exists in", install="add an install rule for it "
+                                    "(CMake install(DIRECTORY ...) or setup.py data_files)")
     yield from _command_files(ctx, seen)
     yield from _opened_files(ctx, seen)
+
+
+def _file_problem(ctx: CheckContext, span: Span, pkg: str, rel: str, loc: Any, what: str,
+                  fails: str = "", fails_uninstalled: str = "", check: str = "file name",
+                  present: str = "is in", install: str = "add an install rule for it") -> Diagnostic:
+    """U104 for file ``rel`` of workspace package ``pkg`` that ``loc`` (``locate``) finds missing
+    or not installed; ``what`` says how the launch file uses it, ``fails`` what then fails."""
+    if loc.status == "missing":
+        msg = (f'file "{rel}" {what} does not exist in package "{pkg}" (it would be opened as '
+               f'"share/{pkg}/{rel}"){fails}{_near_file(ctx, pkg, rel)}')
+        fix = f'check the {check}, or add "{rel}" to package "{pkg}" and install it'
+    else:
+        msg = (f'file "{rel}" {what} {present} the sources of package "{pkg}" but is not installed to '
+               f'"share/{pkg}/{rel}"{fails_uninstalled}')
+        fix = loc.install_hint or install
+    return Diagnostic("U104", span, msg, help=fix, key=f"{pkg}/{rel}")
 
 
 def _near_file(ctx: CheckContext, pkg: str, rel: str) -> str:
@@ -230,17 +240,9 @@ def _opened_files(ctx: CheckContext, seen: set[tuple[object, str]]) -> Iterator[
             if loc.status not in ("missing", "not_installed"):
                 continue
             seen.add((span, path))
-            rel = path.split(f"/share/{pkg}/", 1)[1]
-            if loc.status == "missing":
-                msg = (f'file "{rel}" opened while the launch description is built does not exist in package '
-                       f'"{pkg}" (it would be opened as "share/{pkg}/{rel}"); launch fails with FileNotFoundError'
-                       f'{_near_file(ctx, pkg, rel)}')
-                fix = f'check the file name, or add "{rel}" to package "{pkg}" and install it'
-            else:
-                msg = (f'file "{rel}" opened while the launch description is built is in the sources of package '
-                       f'"{pkg}" but is not installed to "share/{pkg}/{rel}"; launch fails with FileNotFoundError')
-                fix = loc.install_hint or "add an install rule for it"
-            yield Diagnostic("U104", span, msg, help=fix, key=f"{pkg}/{rel}")
+            fails = "; launch fails with FileNotFoundError"
+            yield _file_problem(ctx, span, pkg, path.split(f"/share/{pkg}/", 1)[1], loc,
+                                "opened while the launch description is built", fails, fails)
 
 
 def _known_share_path(ctx: CheckContext, join: PathJoin) -> tuple[str, str] | None:
@@ -279,13 +281,5 @@ def _command_files(ctx: CheckContext, seen: set[tuple[object, str]]) -> Iterator
                 if loc.status not in ("missing", "not_installed"):
                     continue
                 seen.add((part.span, rel))
-                if loc.status == "missing":
-                    msg = (f'file "{rel}" given to Command(...) does not exist in package "{pkg}" '
-                           f'(it would be opened as "share/{pkg}/{rel}"); the command fails at launch'
-                           f'{_near_file(ctx, pkg, rel)}')
-                    fix = f'check the file name, or add "{rel}" to package "{pkg}" and install it'
-                else:
-                    msg = (f'file "{rel}" given to Command(...) is in the sources of package "{pkg}" '
-                           f'but is not installed to "share/{pkg}/{rel}"')
-                    fix = loc.install_hint or "add an install rule for it"
-                yield Diagnostic("U104", part.span, msg, help=fix, key=f"{pkg}/{rel}")
+                yield _file_problem(ctx, part.span, pkg, rel, loc, "given to Command(...)",
+                                    "; the command fails at launch")

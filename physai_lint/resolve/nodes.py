@@ -117,7 +117,7 @@ class NodeBuilder:
     def __init__(self, inst: Instantiator) -> None:
         self.inst = inst
         self.count = 0
-        self.anon_names: list[str] = []  # the AnonName keys given out (``_anon``)
+        self.anon_count = 0  # the AnonName keys given out (``_anon``)
         self.by_action: dict[str, list[str]] = {}  # "<file>#<action id>" -> node ids
         self.by_id: dict[str, NodeInstance] = {}  # every node registered, by id
         self.pending: list[tuple[str, str, str, Span, float | None]] = []  # key, node, reason, span, delay
@@ -151,8 +151,8 @@ class NodeBuilder:
         if not isinstance(cache, dict):
             cache = scope.configs[_ANON] = {}
         if ident not in cache:
-            cache[ident] = f"{ident}#{len(self.anon_names) + 1}"
-            self.anon_names.append(cache[ident])
+            self.anon_count += 1
+            cache[ident] = f"{ident}#{self.anon_count}"
         return str(cache[ident])
 
     def _namespace(self, raw: str | None, given: bool, scope: Scope) -> tuple[str | None, bool]:

@@ -1,12 +1,20 @@
 """Lifecycle managers and containers: S201 lifecycle-node-not-launched, S202 lifecycle-node-unmanaged,
-S203 container-not-launched, S204 controller-type-not-set."""
+S203 container-not-launched, S204 controller-type-not-set, S205 extra-argument-not-bool,
+S206 unknown-extra-argument."""
 from __future__ import annotations
 
 from collections.abc import Iterator
 from typing import Any
 
 from physai_lint.checks._params import effective, fully_known
-from physai_lint.checks._util import CONTAINER_EXECUTABLES, command_words, did_you_mean, once, where
+from physai_lint.checks._util import (
+    CONTAINER_EXECUTABLES,
+    all_nodes,
+    command_words,
+    did_you_mean,
+    once,
+    where,
+)
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.graph.plan import SPAWNER_VALUE_OPTIONS
 from physai_lint.model.findings import Diagnostic, Related
@@ -347,3 +355,79 @@ def _all_sources_read(ctx: CheckContext, node: NodeInstance, params: dict[str, A
     if any(isinstance(s, ResolvedParamFile) and s.status == "missing" for s in node.param_sources):
         return False
     return fully_known(ctx, node, params, values=False)
+
+
+# ---- S205/S206: a component's extra_arguments ---------------------------------------------------
+
+# The extra arguments rclcpp's component manager reads from a load request, each required to be a
+# bool (component_manager.cpp :: create_node_options). Humble to jazzy read two and ignore any
+# other; since rclcpp 29.3 (ros2/rclcpp#2685, kilted on) it reads seven and refuses any other.
+_EXTRA_ARGS_OLD = ("use_intra_process_comms", "forward_global_arguments")
+_EXTRA_ARGS_NEW = ("forward_global_arguments", "enable_rosout", "use_intra_process_comms",
+                   "enable_topic_statistics", "start_parameter_services",
+                   "start_parameter_event_publisher", "use_clock_thread", "enable_logger_service")
+
+
+def _extra_names(distro: str) -> tuple[str, ...]:
+    return _EXTRA_ARGS_OLD if distro in ("humble", "iron", "jazzy") else _EXTRA_ARGS_NEW
+
+
+def _extra_args(ctx: CheckContext) -> Iterator[tuple[NodeInstance, Any]]:
+    """(component, typed extra argument) for components that may be loaded, each position once."""
+    seen: set[tuple[object, str]] = set()
+    for _launch, node in all_nodes(ctx, include_inactive=False):
+        if node.kind != "composable_node":
+            continue
+        for rp in node.extra_args:
+            if (rp.span, rp.name) not in seen:
+                seen.add((rp.span, rp.name))
+                yield node, rp
+
+
+def _as_sent(rp: Any) -> str:
+    value = rp.value
+    if isinstance(value, str):
+        what = f'the string "{value}"'
+        if rp.typed_by == "python" and value.strip().lower() in ("true", "false"):
+            what += " (a Python string stays a string: launch_ros types only substitutions by YAML)"
+        return what
+    kind = {int: "the integer", float: "the double", list: "the array"}.get(type(value), "the value")
+    shown = f"{value!r}" if not isinstance(value, list) else str(value)
+    return f"{kind} {shown}" + (f" (YAML of \"{rp.raw}\")" if rp.typed_by == "yaml" and rp.raw else "")
+
+
+@rule("S205", "extra-argument-not-bool")
+def extra_argument_not_bool(ctx: CheckContext) -> Iterator[Diagnostic]:
+    names = _extra_names(ctx.distro)
+    for node, rp in _extra_args(ctx):
+        if rp.name not in names or rp.value is None or isinstance(rp.value, bool):
+            continue
+        yield Diagnostic(
+            "S205", rp.span,
+            f'extra argument "{rp.name}" of component {where(node)} is {_as_sent(rp)}; the container '
+            f"accepts only a bool and refuses to load the component (\"Extra component argument "
+            f"'{rp.name}' must be a boolean\")",
+            help=f"give {rp.name} a bool: True or False in Python, or a substitution that evaluates "
+                 f'to "true" or "false"',
+            key=rp.name)
+
+
+@rule("S206", "unknown-extra-argument")
+def unknown_extra_argument(ctx: CheckContext) -> Iterator[Diagnostic]:
+    names = _extra_names(ctx.distro)
+    refuses = names is _EXTRA_ARGS_NEW
+    for node, rp in _extra_args(ctx):
+        if rp.name in names:
+            continue
+        close = did_you_mean(rp.name, list(names))
+        hint = f'; did you mean "{close[0]}"?' if close else ""
+        effect = (f"the container refuses to load the component (\"Extra component argument '{rp.name}' "
+                  f"is not supported\")" if refuses else
+                  "the container ignores it, so it has no effect")
+        yield Diagnostic(
+            "S206", rp.span,
+            f'extra argument "{rp.name}" of component {where(node)} is not one the component '
+            f"manager reads on {ctx.distro}; {effect}{hint}",
+            help="the extra arguments a container reads: " + ", ".join(names) +
+                 "; a parameter of the component goes into parameters=[...]",
+            key=rp.name)

@@ -289,7 +289,8 @@ class _Builder:
             tuple(self.composable(c) for c in self.kids(el, "composable_node")))
 
     def composable(self, el: Element) -> ComposableNode:
-        extra = tuple((self.lit(x, "name") or "", self.req(x, "value"), x.span)
+        # launch_ros parses each value as substitutions, typed by YAML when the node is loaded
+        extra = tuple((self.lit(x, "name") or "", PSubst(self.req(x, "value"), None, x.span), x.span)
                       for x in self.kids(el, "extra_arg"))
         return ComposableNode(
             self.val(el, "pkg"), self.val(el, "plugin"), self.val(el, "name"),

@@ -173,7 +173,9 @@ class ComposableNode:
     namespace: Value | None
     parameters: tuple[ParamSource, ...]
     remappings: tuple[Remapping, ...]
-    extra_arguments: tuple[tuple[str, Value, Span], ...]
+    # extra_arguments: (name, value, span of the key); typed like a parameter dict's values
+    # (launch_ros get_composable_node_load_request runs them through evaluate_parameters)
+    extra_arguments: tuple[tuple[str, PValue, Span], ...]
     span: Span
     condition: Condition | None = None  # the one launch_ros is given (condition= / if= / unless=)
     id: str = ""

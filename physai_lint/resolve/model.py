@@ -130,6 +130,8 @@ class NodeInstance:
     # A name given as "$(anon ID)" / AnonName(ID): "ID#k", equal for the nodes that get the same
     # generated name (AnonName caches it per ID in launch_configurations['anon']); else None.
     anon: str | None = None
+    # A component's extra_arguments, typed as launch_ros sends them in the load request
+    extra_args: tuple[ResolvedParam, ...] = ()
 
 
 @fast_init

@@ -9,7 +9,7 @@ from physai_lint.model import launch as ir
 from physai_lint.model import values as v
 from physai_lint.model.span import Span
 from physai_lint.resolve import names
-from physai_lint.resolve.evaluate import TRUE_WORDS, Scope
+from physai_lint.resolve.evaluate import Scope
 from physai_lint.resolve.model import (
     LIFECYCLE_MANAGERS,
     EffRemap,
@@ -426,7 +426,9 @@ class NodeBuilder:
         # rclcpp_components loads a component with use_global_arguments(false): the container's own
         # command line (-r __ns:=, --params-file) reaches it only with extra_arguments
         # forward_global_arguments: true (component_manager.cpp :: create_node_options)
-        forward = self._forwards_global_arguments(cn, scope)
+        extra = tuple(resolve_pvalue(key, value, lambda x: self.inst.ev.eval(x, scope), span)
+                      for key, value, span in cn.extra_arguments)  # read when it is loaded
+        forward = _forwards_global_arguments(extra)
         if not specified:
             # otherwise launch sends no namespace and the node gets its constructor's default, the
             # root namespace
@@ -435,8 +437,6 @@ class NodeBuilder:
             else:
                 namespace = container_ns if forward else "/"
         fqn = names.join_fqn(namespace, name) if (namespace and name) else None
-        for _key, value, _span in cn.extra_arguments:  # read when the component is loaded
-            self.inst.ev.eval(value, scope)
         node_id = self._id()
         remaps, gparams = self._global_sources(scope, node_id, cn.span, cn.parameters,
                                                composable=True)
@@ -448,7 +448,7 @@ class NodeBuilder:
             param_sources=params, span=cn.span, file=fr.file, action=cn,
             action_id=f"{fr.file}#{cn.id or cn.span.line}", include_chain=fr.chain[:-1],
             name_explicit=name_given, namespace_explicit=specified, container=container,
-            container_id=container_id, package_from_config=package_from_config,
+            container_id=container_id, package_from_config=package_from_config, extra_args=extra,
         )
         if ignored and active is not False and not _same_condition(cn.condition, load_condition):
             raw = cn.condition.raw if not cn.condition.raw.endswith("(...)") else ""  # type: ignore[union-attr]
@@ -472,17 +472,6 @@ class NodeBuilder:
             return [UnknownParams("the container's parameters, if forward_global_arguments is set", span)]
         return [replace(s, origin="forwarded") if isinstance(s, (ResolvedParamFile, ResolvedParamDict))
                 else s for s in sources]
-
-    def _forwards_global_arguments(self, cn: ir.ComposableNode, scope: Scope) -> bool | None:
-        """extra_arguments forward_global_arguments (False when absent; None when unknown)."""
-        for key, value, _span in cn.extra_arguments:
-            if key != "forward_global_arguments":
-                continue
-            text = self.inst.ev.eval(value, scope)
-            if text is None:
-                return None
-            return text.strip().lower() in TRUE_WORDS
-        return False
 
     def load(self, a: ir.LoadComposableNodes, scope: Scope) -> None:
         container: str | None = None
@@ -838,3 +827,13 @@ def _cli_typed(rp: ResolvedParam) -> ResolvedParam:
     except Exception:  # the params package is optional for this conversion
         return rp
     return ResolvedParam(rp.name, value, rp.span, text, "yaml")
+
+
+def _forwards_global_arguments(extra: tuple[ResolvedParam, ...]) -> bool | None:
+    """extra_arguments forward_global_arguments, as typed for the load request (False when absent;
+    None when unknown). rclcpp reads the last one given; one that is not a bool makes the container
+    refuse the component (component_manager.cpp :: create_node_options; S205 reports it)."""
+    for rp in reversed(extra):
+        if rp.name == "forward_global_arguments":
+            return rp.value if isinstance(rp.value, bool) else None
+    return False

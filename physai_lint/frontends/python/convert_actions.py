@@ -8,7 +8,15 @@ from physai_lint.model.span import Span
 from physai_lint.model.values import BoolOp, Text, Unknown, Value, literal_of
 
 from . import api
-from .convert_values import opt_value, span_at, to_condition, to_params, to_pvalue, to_value
+from .convert_values import (
+    item_spans,
+    opt_value,
+    span_at,
+    to_condition,
+    to_params,
+    to_pvalue,
+    to_value,
+)
 from .runtime import Alternatives, Branched, CondTag, LObj, Opaque, type_name
 
 if TYPE_CHECKING:
@@ -433,7 +441,11 @@ class ActionBuilder:
             ea = c.kwargs.get("extra_arguments")
             for d in ea if isinstance(ea, (list, tuple)) else []:
                 if isinstance(d, dict):
-                    extra.extend((str(k), to_value(x, c.span), c.arg_span(-1, "extra_arguments")) for k, x in d.items())
+                    spans = item_spans(d) if isinstance(item_spans(d), dict) else {}
+                    whole = c.arg_span(-1, "extra_arguments")
+                    for k, x in d.items():
+                        kspan, vspan = spans.get(k, (whole, whole))
+                        extra.append((str(k), to_pvalue(x, vspan), kspan))
             out.append(L.ComposableNode(
                 opt_value(c, -1, "package"), opt_value(c, -1, "plugin"), opt_value(c, -1, "name"),
                 opt_value(c, -1, "namespace"), to_params(c.kwargs.get("parameters"), c.arg_span(-1, "parameters")),

@@ -193,3 +193,79 @@ def _launch_nulls(node: NodeInstance, seen: set[object]) -> Iterator[Diagnostic]
                 "null for launch (PyYAML), a type no parameter has; launch refuses to start the node",
                 help='remove the parameter to keep its default, or quote the text ("\'null\'")',
                 key=f"{node.fqn}:{prm.name}")
+
+
+# ---- P113: a substituted value launch cannot type ----------------------------------------------
+
+def _yaml_outcome(text: str) -> tuple[str, str] | None:
+    """("error", the YAML problem) or ("mapping", "") when ``yaml.safe_load`` cannot make a
+    parameter value of ``text``; None when it can (lists are P106's, null P112's) or it is not
+    worked out (an alias, a text too long)."""
+    from physai_lint.params.typing import pyyaml_type, yaml_syntax_error
+
+    problem = yaml_syntax_error(text)
+    if problem == "an alias":
+        return None
+    if problem is not None:
+        return "error", problem
+    return ("mapping", "") if isinstance(pyyaml_type(text), dict) else None
+
+
+def _markup_literal(ctx: CheckContext, prm: ResolvedParam) -> bool:
+    """Whether ``prm`` is an XML ``<param value=...>`` without substitutions: launch_xml's
+    ``get_attr`` types it itself (``coerce_to_type``, a text YAML cannot read stays a string)."""
+    from physai_lint.checks._util import ir_objects
+    from physai_lint.model.launch import ParamEntry
+    from physai_lint.model.values import PSubst, literal_of
+
+    return any(type(o) is ParamEntry and o.span == prm.span and type(o.value) is PSubst
+               and isinstance(literal_of(o.value.value), str) for o in ir_objects(ctx, prm.span.file))
+
+
+def _failure(ctx: CheckContext, prm: ResolvedParam, outcome: tuple[str, str]) -> tuple[str, str] | None:
+    """(how launch reads the value, how it then fails) by the frontend ``prm`` comes from; None when
+    that frontend keeps the text as it is."""
+    file = prm.span.file or ""
+    dict_type = outcome[0] == "mapping"
+    if not file.endswith((".xml", ".yaml", ".yml")):
+        return "a substituted parameter value is read with YAML rules", (
+            "launch_ros fails evaluating it (TypeError \"" +
+            ("Allowed value types are bytes, bool, int, float, str, Sequence[...]. Got <class 'dict'>"
+             if dict_type else f"Unable to parse the value of parameter {prm.name} as yaml") + '")')
+    if file in ctx.launch_files and _markup_literal(ctx, prm):
+        if not dict_type or not file.endswith(".xml"):
+            return None  # launch_xml keeps a text YAML cannot read; launch_yaml's values are typed
+        return "an XML value without substitutions is typed with YAML rules when the file is read", (
+            "launch_xml cannot read the attribute and the launch file fails to load (TypeError "
+            f"\"Attribute 'value' of Entity 'param' expected to be of type 'None'.'{prm.raw}' can not be "
+            "converted to one of those types\")")
+    return "a substituted parameter value is read with YAML rules", (
+        f"launch fails evaluating it (ValueError \"Failed to convert '{prm.raw}' using yaml rules: " +
+        ("output type is not allowed, got <class 'dict'>" if dict_type else "yaml.safe_load() failed") + '")')
+
+
+@rule("P113", "invalid-parameter-value")
+def invalid_parameter_value(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for _, node in nodes_with_params(ctx):
+        for src in node.param_sources:
+            if not isinstance(src, ResolvedParamDict):
+                continue
+            for prm in src.params:
+                if prm.typed_by != "yaml" or prm.value is not None or not prm.raw or \
+                        prm.raw.lstrip().startswith("[") or (prm.span, prm.name) in seen:
+                    continue
+                outcome = _yaml_outcome(prm.raw)
+                found = None if outcome is None else _failure(ctx, prm, outcome)
+                if outcome is None or found is None:
+                    continue
+                seen.add((prm.span, prm.name))
+                what = f"is not valid YAML ({outcome[1]})" if outcome[0] == "error" else \
+                    "is a YAML mapping (\"key: value\"), which no parameter holds"
+                yield Diagnostic(
+                    "P113", prm.span,
+                    f'parameter "{prm.name}" of {node.fqn or node.executable}: value "{prm.raw}" {what}; '
+                    f"{found[0]}, and {found[1]}",
+                    help="pass the text as a string: ParameterValue(..., value_type=str) in Python, "
+                         "type=\"str\" in XML; or quote it inside the value (\"'map: odom'\")",
+                    key=f"{node.fqn}:{prm.name}")

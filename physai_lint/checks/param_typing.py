@@ -252,6 +252,12 @@ def invalid_parameter_value(ctx: CheckContext) -> Iterator[Diagnostic]:
             if not isinstance(src, ResolvedParamDict):
                 continue
             for prm in src.params:
+                if prm.command is not None and prm.typed_by == "yaml" and (prm.span, prm.name) not in seen:
+                    found_cmd = _printed_description(ctx, node, prm)
+                    if found_cmd is not None:
+                        seen.add((prm.span, prm.name))
+                        yield found_cmd
+                    continue
                 if prm.typed_by != "yaml" or prm.value is not None or not prm.raw or \
                         prm.raw.lstrip().startswith("[") or (prm.span, prm.name) in seen:
                     continue
@@ -269,3 +275,43 @@ def invalid_parameter_value(ctx: CheckContext) -> Iterator[Diagnostic]:
                     help="pass the text as a string: ParameterValue(..., value_type=str) in Python, "
                          "type=\"str\" in XML; or quote it inside the value (\"'map: odom'\")",
                     key=f"{node.fqn}:{prm.name}")
+
+
+def _printed_description(ctx: CheckContext, node: NodeInstance, prm: ResolvedParam) -> Diagnostic | None:
+    """P113 for ``{'robot_description': Command(['xacro ', file])}``: the file the command prints
+    (a workspace file) holds a line that its output keeps and YAML cannot read as text."""
+    from physai_lint.model.findings import Related
+    from physai_lint.params.description_yaml import description_breakage, printed_file
+
+    printed = printed_file(prm.command or "")
+    locate = getattr(ctx.packages, "locate", None)
+    read = getattr(ctx.packages, "read_text", None)
+    if printed is None or locate is None or read is None:
+        return None
+    program, path = printed
+    loc = locate(path)
+    text = read(loc.source) if loc.status == "ok" and loc.source else None
+    memo = ctx.options.setdefault("_printed_descriptions", {})
+    key = (program, loc.source)
+    if key not in memo:
+        memo[key] = None if text is None else description_breakage(program, loc.source, text)
+    broken = memo[key]
+    if broken is None:
+        return None
+    kept = "keeps" if program == "xacro" else "prints"
+    name = broken.path.rsplit("/", 1)[-1]
+    fails = "passes a description cut there, or fails evaluating it" if "comment" in broken.what \
+        else "fails evaluating it"
+    error = ("ValueError \"Failed to convert '...' using yaml rules: yaml.safe_load() failed\""
+             if (prm.span.file or "").endswith((".xml", ".yaml", ".yml")) else
+             f'TypeError "Unable to parse the value of parameter {prm.name} as yaml"')
+    return Diagnostic(
+        "P113", prm.span,
+        f'parameter "{prm.name}" of {node.fqn or node.executable} is the output of "{program} {name}", '
+        f"not wrapped in ParameterValue(..., value_type=str), which launch_ros reads with YAML rules; "
+        f'{program} {kept} line {broken.line} of {name} ("{broken.snippet}"), where '
+        f"{broken.what}: launch {fails} ({error})",
+        help=f"wrap the command: {{'{prm.name}': ParameterValue(Command([...]), value_type=str)}} "
+             "(from launch_ros.parameter_descriptions import ParameterValue)",
+        related=(Related(Span.point(broken.path, broken.line), f"the line {program} {kept}"),),
+        key=f"{node.fqn}:{prm.name}")

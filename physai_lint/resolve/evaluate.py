@@ -86,6 +86,9 @@ class Evaluator:
         self.env_set: set[str | None] = set()  # variables a SetEnvironmentVariable wrote (None: unknown)
         # launch configurations looked up so far: a value whose evaluation moves it depends on one
         self.config_lookups = 0
+        # the last Command evaluated, with its command line when known (never run: its output is
+        # unknown; rules may look at the file it prints)
+        self.last_command: tuple[v.Command, str | None] | None = None
 
     def eval_noting_configs(self, value: v.Value | None, scope: Scope) -> tuple[str | None, bool | str]:
         """(``eval``, whether it looked up a launch configuration: ``$(var model)_description``;
@@ -180,8 +183,20 @@ class Evaluator:
             return None
         # Command, FindExecutable, Unknown: never known statically.
         if isinstance(p, v.Command):
-            self.eval(p.command, scope)
+            self.last_command = (p, self._command_line(p.command, scope))
         return None
+
+    def _command_line(self, command: v.Value, scope: Scope) -> str | None:
+        """A command's text, ``FindExecutable(name=x)`` standing for its name ``x`` (where on PATH
+        it is found does not matter to what the command prints); None when unknown."""
+        out: list[str] = []
+        for part in command:
+            text = self.eval(part.name, scope) if isinstance(part, v.FindExecutable) else self._part(part, scope)
+            if text is None:
+                self.eval(command, scope)  # the reads of the rest still happen
+                return None
+            out.append(text)
+        return "".join(out)
 
     def _config(self, p: v.LaunchConfig, scope: Scope) -> str | None:
         name = self.eval(p.name, scope)

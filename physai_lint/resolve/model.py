@@ -74,6 +74,9 @@ class ResolvedParam:
     raw: str | None = None
     typed_by: Literal["python", "yaml", "forced", "rcl"] = "python"  # rcl: -p on the command line
     item_spans: tuple[Span, ...] | None = None  # per list item, when written as a literal list
+    # The command line of a value that is one Command([...]) typed by YAML, when known: its output
+    # (never run) is what launch reads with YAML rules (P113 looks at the file it prints)
+    command: str | None = None
 
 
 @fast_init

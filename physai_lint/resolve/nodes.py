@@ -179,8 +179,19 @@ class NodeBuilder:
                          ) -> tuple[ResolvedParam, ResolvedParam]:
         """A ``SetParameter``'s value as ``SetParameter.execute`` evaluates it (what a component's
         load request carries), and as a process gets it, through ``-p name:=text``."""
-        rp = resolve_pvalue(name, pvalue, lambda x: self.inst.ev.eval(x, scope), span)
+        rp = self._param(name, pvalue, scope, span)
         return rp, _cli_typed(rp)
+
+    def _param(self, name: str, pvalue: v.PValue, scope: Scope, span: Span) -> ResolvedParam:
+        """``resolve_pvalue``, with the command line of a value that is one ``Command``."""
+        ev = self.inst.ev
+        ev.last_command = None
+        rp = resolve_pvalue(name, pvalue, lambda x: ev.eval(x, scope), span)
+        if rp.value is None and rp.raw is None and ev.last_command is not None and \
+                isinstance(pvalue, v.PSubst) and pvalue.value_type is None and len(pvalue.value) == 1 and \
+                pvalue.value[0] is ev.last_command[0] and ev.last_command[1] is not None:
+            rp = replace(rp, command=ev.last_command[1])
+        return rp
 
     def _global_sources(self, scope: Scope, node_id: str, node_span: Span,
                         own: tuple[ir.ParamSource, ...], composable: bool = False
@@ -270,8 +281,7 @@ class NodeBuilder:
                 unopened = self._unopened(src.path, scope) if path is None else None
                 out.append(unopened or self._file(path, src.span, "node", src.allow_substs, scope))
             elif isinstance(src, ir.ParamDict):
-                params = tuple(resolve_pvalue(e.name, e.value, lambda x: self.inst.ev.eval(x, scope),
-                                              e.span) for e in src.entries)
+                params = tuple(self._param(e.name, e.value, scope, e.span) for e in src.entries)
                 out.append(ResolvedParamDict(params, src.span, "node", key))
             else:
                 out.append(UnknownParams(src.reason, src.span))

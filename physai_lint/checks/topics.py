@@ -296,6 +296,54 @@ def set_remap_no_effect(ctx: CheckContext) -> Iterator[Diagnostic]:
             yield Diagnostic("T103", span, f'SetRemap "{src}" -> "{dst}" reaches no node',
                              help="put the SetRemap before the nodes it should apply to, in the same scope",
                              key=f"{src}:{dst}")
+    yield from _set_remaps_matching_nothing(ctx, seen)
+
+
+def _set_remaps_matching_nothing(ctx: CheckContext, seen: set[object]) -> Iterator[Diagnostic]:
+    """A SetRemap every node it reaches ignores: each has a complete, trusted interface (T102's
+    conditions) and no name the rule matches once expanded in that node's namespace. One that a
+    node may use (its names unknown, or not all known) is left alone."""
+    reached: dict[object, list[tuple[Any, NodeInstance, int]]] = {}
+    for g in graphs(ctx):
+        for node in g.launch.nodes:
+            if node.active is False or node.kind == "process":
+                continue
+            for i, r in enumerate(node.remaps):
+                if r.origin == "global" and r.span not in seen:
+                    reached.setdefault(r.span, []).append((g, node, i))
+    for span, uses in reached.items():
+        first = uses[0][1].remaps[uses[0][2]]
+        if first.src is None or first.src.startswith("__"):
+            continue
+        names: list[tuple[NodeInstance, str, list[str]]] = []
+        for g, node, i in uses:
+            r = node.remaps[i]
+            if node.id not in g.known or not _trusted(ctx, node) or not _applies(r, node):
+                break
+            eps = g.endpoints_of(node.id)
+            src, dst = remap_target(r, node)
+            if src is None or g.remap_used(node.id, i) or any(e.expanded is None or e.expanded == src for e in eps):
+                break
+            names.append((node, src, sorted({e.expanded for e in eps if e.expanded})))
+        else:
+            seen.add(span)
+            node, src, own = names[0]
+            relative = [n for n in own if n.rsplit("/", 1)[-1] == src.rsplit("/", 1)[-1]]
+            if relative and first.src.startswith("/"):
+                detail = (f'; {node.fqn or node.executable} uses "{relative[0]}" (a relative name in namespace '
+                          f'"{node.namespace}"): write the rule as "{relative[0].rsplit("/", 1)[-1]}"')
+            elif relative:
+                detail = f'; did you mean "{relative[0]}"?'
+            else:
+                detail = ""
+            reach = ", ".join(sorted({n.fqn or n.executable or "?" for n, _, _ in names})[:4])
+            yield Diagnostic(
+                "T103", span,
+                f'SetRemap "{first.src}" -> "{first.dst}" matches no topic or service of the nodes it '
+                f'reaches ({reach}; for {node.fqn or node.executable} it would match "{src}"){detail}',
+                help="remap a name the nodes actually use (a relative name resolves against each "
+                     "node's namespace), or move the SetRemap to where the nodes that use it are",
+                key=f"{first.src}:{first.dst}")
 
 
 @rule("T201", "subscription-without-publisher")

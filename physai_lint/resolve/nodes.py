@@ -523,11 +523,21 @@ class NodeBuilder:
         executable = cmd[0] if cmd else None
         inst_ = NodeInstance(
             id=self._id(), kind="process", package=None, executable=executable, name=None,
-            namespace=None, fqn=None, active=fr.active, remaps=[], param_sources=[], span=a.span,
+            namespace=None, fqn=None, active=fr.active, remaps=self._ros2_run_remaps(cmd, a),
+            param_sources=[], span=a.span,
             file=fr.file, action=None, action_id=f"{fr.file}#{a.id}", include_chain=fr.chain[:-1],
             arguments=cmd[1:], in_timer=fr.deferred == "timer",
         )
         self._register(inst_, inst_.action_id)
+
+    def _ros2_run_remaps(self, cmd: tuple[str | None, ...], a: ir.ExecuteProcess) -> list[EffRemap]:
+        """The remap rules of ``ros2 run <package> <executable> [args]``: the arguments after the
+        executable reach it as its command line (``--ros-args -r __ns:=...``), which rcl parses
+        like a Node's. Other commands: none known."""
+        if len(cmd) < 5 or cmd[0] is None or cmd[0].rsplit("/", 1)[-1] != "ros2" or cmd[1] != "run" \
+                or any(w is None or w.startswith("-") for w in cmd[2:4]):
+            return []
+        return self._command_line_remaps(command_line_values(zip(cmd[4:], (a.cmd or ())[4:]), ()), a.span)
 
     def watch(self, h: ir.EventHandler, key: str | None, fr: Any) -> None:
         if key is not None and fr.active is not False:  # disabled by its own condition: never registered

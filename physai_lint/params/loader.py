@@ -473,6 +473,7 @@ def load_param_file(path: str, text: str, distro: str = "humble") -> ParamFileMo
             "X001", Span(path, line, col, line, col + 1),
             f"YAML syntax error at line {line}, column {col}: {msg}", key="yaml"))
         p.model.ok = False
+        _drop_values_reaching(p, line)
     except (yaml.YAMLError, ValueError, RecursionError, MemoryError) as exc:
         p.model.diagnostics.append(Diagnostic(
             "X001", Span.whole_file(path), f"YAML error: {exc}", key="yaml"))
@@ -510,6 +511,18 @@ def load_param_file(path: str, text: str, distro: str = "humble") -> ParamFileMo
         if not has_params_key(text):
             p.model.flat = _flat_block(path, text)
     return p.model
+
+
+def _drop_values_reaching(p: _Parser, line: int) -> None:
+    """Forget the values that reach the line of a syntax error: the scanner folded the next line
+    into them (``zeta: 0.0`` then an over-indented ``use_mag: false`` is the scalar "0.0 use_mag"
+    until the ``:``), a value no reader ever gives the node."""
+    def reaches(fp: Any) -> bool:
+        return isinstance(fp, FileParam) and fp.value_span.end_line >= line
+
+    for b in p.blocks:
+        b.params = [fp for fp in b.params if not reaches(fp)]
+    p.model.ops = [op for op in p.model.ops if not (op and op[0] == "set" and reaches(op[-1]))]
 
 
 def _flat_block(path: str, text: str) -> NodeBlock | None:

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from physai_lint.checks._util import python_facts, suggestion
+from physai_lint.checks._util import did_you_mean, python_facts, suggestion
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic
 from physai_lint.model.launch import CallFact
@@ -51,6 +51,19 @@ def _tables(distro: str) -> dict[str, frozenset[str]]:
 
 
 _A, _R = "launch.actions.", "launch_ros.actions."
+
+
+def accepted_keywords(qualname: str) -> frozenset[str] | None:
+    """The keywords a launch API class takes in any distro (None: not a class known here). The
+    Python frontend notes the configurations in the others' values as read by code it cannot
+    follow: the action is never built as written, and its reads are not "unused" (L102)."""
+    global _ANY_DISTRO
+    if _ANY_DISTRO is None:
+        _ANY_DISTRO = _tables("rolling")
+    return _ANY_DISTRO.get(qualname)
+
+
+_ANY_DISTRO: dict[str, frozenset[str]] | None = None
 # Parameters that may be given positionally, in order (the rest are keyword-only), and the
 # parameters without a default; the same in humble, jazzy and rolling (launch f31c1ff1/02595baf,
 # launch_ros 25a207ca/f9ab9371 ``__init__`` signatures).
@@ -93,8 +106,33 @@ _WHY = {
 }
 
 
-def _signature_problems(call: CallFact, cls: str) -> Iterator[Diagnostic]:
-    """Too many positional arguments, and required arguments given neither way (not for splats)."""
+def _missing(call: CallFact, cls: str) -> list[str]:
+    """The required arguments ``call`` gives neither by position nor by keyword."""
+    positional = _POSITIONAL.get(call.qualname, ())
+    given = set(positional[:call.positional]) | {kw for kw, _ in call.kwargs}
+    aliases = _DASHING_COMPONENT if cls == "ComposableNode" else _DASHING if call.qualname in _NODE_LIKE else {}
+    given |= {aliases[kw] for kw in given if kw in aliases}  # reported as a rename instead
+    return [p for p in _REQUIRED.get(call.qualname, ()) if p not in given]
+
+
+def _misspelt_required(call: CallFact, cls: str, allowed: frozenset[str]) -> dict[str, str]:
+    """Unknown keywords that are a required argument misspelt (``TimerAction(action=...)``):
+    keyword -> the required argument. Reported once, at the keyword."""
+    if call.splat or call.positional > len(_POSITIONAL.get(call.qualname, ())):
+        return {}
+    missing = _missing(call, cls)
+    out = {}
+    for kw, _span in call.kwargs:
+        if kw not in allowed and missing:
+            close = did_you_mean(kw, missing)
+            if close:
+                out[kw] = close[0]
+    return out
+
+
+def _signature_problems(call: CallFact, cls: str, misspelt: dict[str, str]) -> Iterator[Diagnostic]:
+    """Too many positional arguments, and required arguments given neither way (not for splats;
+    nor those ``misspelt``, reported at the misspelt keyword)."""
     if call.splat:
         return
     positional = _POSITIONAL.get(call.qualname, ())
@@ -109,10 +147,7 @@ def _signature_problems(call: CallFact, cls: str) -> Iterator[Diagnostic]:
                   "rest by keyword"),
             key=f"{cls}:positional")
         return
-    given = set(positional[:call.positional]) | {kw for kw, _ in call.kwargs}
-    aliases = _DASHING_COMPONENT if cls == "ComposableNode" else _DASHING if call.qualname in _NODE_LIKE else {}
-    given |= {aliases[kw] for kw in given if kw in aliases}  # reported as a rename instead
-    missing = [p for p in _REQUIRED.get(call.qualname, ()) if p not in given]
+    missing = [p for p in _missing(call, cls) if p not in misspelt.values()]
     if missing:
         listed = ", ".join(f'"{m}"' for m in missing)
         yield Diagnostic(
@@ -133,9 +168,21 @@ def unknown_keyword_argument(ctx: CheckContext) -> Iterator[Diagnostic]:
             if allowed is None:
                 continue
             cls = call.qualname.rsplit(".", 1)[-1]
-            yield from _signature_problems(call, cls)
+            misspelt = _misspelt_required(call, cls, allowed)
+            yield from _signature_problems(call, cls, misspelt)
             for kw, span in call.kwargs:
                 if kw in allowed:
+                    continue
+                if kw in misspelt:
+                    req = misspelt[kw]
+                    yield Diagnostic(
+                        "L001", span,
+                        f'{cls}() has no keyword argument "{kw}" (did you mean "{req}"?), and its required '
+                        f'argument "{req}" is not given; building the launch description fails with '
+                        f"\"TypeError: ... missing 1 required "
+                        f"{'positional' if req in _POSITIONAL.get(call.qualname, ()) else 'keyword-only'} "
+                        f"argument: '{req}'\"",
+                        help=f'rename "{kw}" to "{req}"', key=f"{cls}:{kw}")
                     continue
                 old = (_DASHING_COMPONENT if cls == "ComposableNode" else
                        _DASHING if call.qualname in _NODE_LIKE else {}).get(kw)

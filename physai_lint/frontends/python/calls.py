@@ -605,6 +605,12 @@ def make_lobj(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any],
     for k, v in kwargs.items():
         if isinstance(v, (dict, list, tuple)):
             ev.kw_kinds[(id(node), k)] = type(v).__name__
+    if kwargs and qual.startswith(("launch.actions.", "launch_ros.")):
+        from physai_lint.checks.launch_api import accepted_keywords
+
+        accepted = accepted_keywords(qual)
+        if accepted is not None and not accepted.issuperset(kwargs):  # L001: what they hold is lost
+            ev.escape([v for k, v in kwargs.items() if k not in accepted])
     short = api.short(qual)
     if short in _SUBSTITUTION_LISTS and api.is_substitution(qual):
         _check_parts(ev, obj, short)

@@ -13,6 +13,7 @@ from physai_lint.interfaces.naming import name_note
 from physai_lint.params.typing import yaml_syntax_error
 from physai_lint.model.findings import Diagnostic, Related
 from physai_lint.resolve.model import ResolvedParamFile
+from physai_lint.resolve.names import name_rejected
 
 
 @rule("P101", "parameter-file-missing")
@@ -79,7 +80,7 @@ def no_match(ctx: CheckContext) -> Iterator[Diagnostic]:
             if path not in ctx.param_files:
                 continue
             readers.setdefault(path, []).append((node, src))
-            if node.active is not False and src.source == path:
+            if node.active is not False and src.source == path and not name_rejected(node.name, node.namespace):
                 loaders.setdefault(path, []).append((node, src))
     for path, users in sorted(loaders.items()):
         model = ctx.param_files[path]

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Any, Literal
 
 from physai_lint.interfaces.model import LIFECYCLE_ENDPOINTS, with_lifecycle_endpoints
 from physai_lint.resolve.model import EffRemap, LaunchResult, NodeInstance
-from physai_lint.resolve.names import expand_topic_name
+from physai_lint.resolve.names import expand_topic_name, name_rejected
 
 if TYPE_CHECKING:
     from physai_lint.model.span import Span
@@ -42,6 +42,7 @@ class SystemGraph:
     launch: LaunchResult
     endpoints: list[Endpoint] = field(default_factory=list)
     known: set[str] = field(default_factory=set)  # node ids whose interface is known
+    rejected: set[str] = field(default_factory=set)  # node ids launch refuses (invalid name)
     # a lifecycle node whose name is unknown: its own endpoints (``~/transition_event``...) are
     # left out rather than unresolved, which would hide every dangling topic of the launch
     unnamed_lifecycle: bool = False
@@ -95,7 +96,8 @@ class SystemGraph:
         action the evaluator could not follow), which may start any node."""
         if self.launch.opaque:
             return True
-        active = [n for n in self.launch.nodes if n.active is not False and n.kind != "process"]
+        active = [n for n in self.launch.nodes if n.active is not False and n.kind != "process"
+                  and n.id not in self.rejected]
         return any(n.id not in self.known for n in active) or any(e.resolved is None for e in self.endpoints)
 
 
@@ -131,6 +133,9 @@ def build_graph(launch: LaunchResult, interfaces: Any, include_inactive: bool = 
     g = SystemGraph(launch)
     for node in launch.nodes:
         if node.kind == "process" or (node.active is False and not include_inactive):
+            continue
+        if name_rejected(node.name, node.namespace):
+            g.rejected.add(node.id)  # launch raises on it (N102/N103): it has no topics
             continue
         iface = interfaces.get(node.package, node.executable) if interfaces is not None else None
         if iface is None:

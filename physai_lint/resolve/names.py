@@ -169,3 +169,11 @@ def expand_topic_name(name: str, node_name: str | None, namespace: str | None) -
         base = join_fqn(namespace, node_name)
         return base if name == "~" else base + name[1:]
     return join_fqn(namespace, name)
+
+
+def name_rejected(name: str | None, namespace: str | None) -> bool:
+    """Whether launch_ros refuses a node with this known name or absolute namespace before starting
+    it (``Node._perform_substitutions``: validate_node_name / validate_namespace raise, and the
+    launch ends): the node never exists, so its topics, services and parameter files are moot."""
+    return (name is not None and validate_node_name(name) is not None) or \
+        (namespace is not None and validate_namespace(namespace) is not None)

@@ -143,7 +143,15 @@ class _Reader:
         elif isinstance(value, yaml.SequenceNode) and value.value and all(
                 isinstance(v, yaml.MappingNode) for v in value.value):
             self.visit(value)
-            el.children.extend(self.element(name, item, item, el.tag) for item in value.value)
+            from physai_lint.frontends.tags import ACCEPTED
+
+            spec = ACCEPTED.get(el.tag)
+            if spec is not None and spec.children is not None and name not in spec.children:
+                # a key the element does not take ("parameters:" for "param:"): launch rejects the
+                # key, reported once there, whatever its items hold
+                el.children.append(self.element(name, key, value.value[0], el.tag))
+            else:
+                el.children.extend(self.element(name, item, item, el.tag) for item in value.value)
         elif isinstance(value, yaml.MappingNode):
             child = self.element(name, value, value, el.tag)
             child.single = True
@@ -230,8 +238,21 @@ def parse_yaml_launch(path: str, text: str) -> FrontendResult:
         return FrontendResult(None, [*reader.diags, Diagnostic(
             "X001", span, 'a YAML launch file must be one mapping with the key "launch"',
             "start the file with \"launch:\" followed by a list of actions", key="root")])
+    body = pairs[0][1]
+    # launch_yaml Entity.children: a list, or a mapping with a "children" list (entity.py)
+    if isinstance(body, yaml.ScalarNode) or isinstance(body, yaml.MappingNode) and not any(
+            isinstance(k, yaml.ScalarNode) and k.value == "children" for k, _ in body.value):
+        kspan = reader.span(pairs[0][0])
+        what, error = ("a mapping", "ValueError \"Expected entity `launch` to have children entities\"") \
+            if isinstance(body, yaml.MappingNode) else \
+            (f'the {"empty value" if not body.value else "scalar " + repr(body.value)}',
+             "a TypeError")
+        return FrontendResult(None, [*reader.diags, Diagnostic(
+            "L010", Span(path, kspan.line, kspan.col, kspan.line, kspan.col + len("launch")),
+            f'"launch" holds {what}, not a list of actions; launch_yaml fails loading the file with {error}',
+            'make each action a list item: "- node:", "- arg:" under "launch:"', key="launch")])
     try:
-        tree = reader.element("launch", pairs[0][0], pairs[0][1], None)
+        tree = reader.element("launch", pairs[0][0], body, None)
     except _Alias as alias:
         return FrontendResult(None, [Diagnostic(
             "X001", reader.span(alias.node), f"YAML aliases expand this launch file past "

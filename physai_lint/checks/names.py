@@ -70,7 +70,7 @@ def duplicate_node_name(ctx: CheckContext) -> Iterator[Diagnostic]:
                 yield Diagnostic(
                     "N101", span,
                     f'node "{node.fqn}" is launched twice: {relpath(node.file)} is included '
-                    f"{len(sites)} times in the same namespace; services, parameters and topics of "
+                    f"{len(sites)} times{_include_cause(node)}; services, parameters and topics of "
                     f"the two collide{name_note((node,))}",
                     help="include the file once, or give each include its own namespace "
                          "(PushRosNamespace in a GroupAction around it)",
@@ -88,6 +88,29 @@ def duplicate_node_name(ctx: CheckContext) -> Iterator[Diagnostic]:
                 help="give each node its own name or namespace (PushRosNamespace / namespace=)",
                 related=(Related(first_at, "first launched here"),),
                 key=node.fqn)
+
+
+def _include_cause(node: NodeInstance) -> str:
+    """Why one node of a file included several times ends with one name each time: its absolute
+    namespace (a pushed namespace does not apply to it), the launch configurations its name reads
+    (an include's arguments stay set for what follows it: launch's IncludeLaunchDescription pushes
+    no scope, and a default applies only to an unset argument), or else the same namespace."""
+    from physai_lint.model.values import LaunchConfig, literal_of
+
+    action = node.action
+    ns_value = getattr(action, "namespace", None)
+    ns = literal_of(ns_value) if ns_value else None
+    if ns and ns.startswith("/"):
+        return (f', and its namespace "{ns}" is absolute, so the namespace each include pushes does '
+                "not apply to it")
+    configs = sorted({literal_of(p.name) or "?" for value in (ns_value, getattr(action, "name", None))
+                      for p in value or () if isinstance(p, LaunchConfig)})
+    if configs:
+        listed = ", ".join(f'"{c}"' for c in configs)
+        return (f" and its name or namespace reads the launch configuration{'s' if len(configs) > 1 else ''} {listed} "
+                "with the same value each time (an include's arguments stay set after it, and a "
+                "default applies only to an unset argument: pass the argument to every include)")
+    return " in the same namespace"
 
 
 def _anon_fqn(node: NodeInstance) -> str | None:

@@ -132,6 +132,7 @@ def not_in_choices(ctx: CheckContext) -> Iterator[Diagnostic]:
                 f'launch argument "{arg.name}" is "{arg.value}" (from the {arg.value_origin}), '
                 f"which is not one of its choices: {options}",
                 help=f"use one of {options}, or add the value to the declaration's choices",
+                related=(Related(arg.span, "declared here with its choices"),) if arg.value_span else (),
                 key=f"{arg.name}={arg.value}")
 
 

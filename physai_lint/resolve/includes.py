@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING
 
 from physai_lint.model import launch as ir
 from physai_lint.model.launch import EVERY_CONFIGURATION
+from physai_lint.model.span import Span
 from physai_lint.resolve.evaluate import Scope
 from physai_lint.resolve.model import IncludeRecord
 
@@ -96,6 +97,7 @@ def include(inst: Instantiator, a: ir.Include, scope: Scope) -> None:
     scope.locals["current_launch_file_path"] = path
     scope.locals["_owner"] = source
     inst.frame = replace(fr, file=source, chain=fr.chain + (source,), passed=frozenset(passed),
+                         passed_at=tuple((name, span) for name, _, span in args if isinstance(span, Span)),
                          dir=posixpath.dirname(path))
     try:
         inst.lookups(lf, scope)

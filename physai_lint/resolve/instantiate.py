@@ -57,6 +57,7 @@ class Frame:
     trigger: list[tuple[str, str, Span]] = field(default_factory=list)  # (action key, reason, span)
     lost: tuple[str, ...] = ()
     passed: frozenset[str] = frozenset()  # args the include that loaded this file passed
+    passed_at: tuple[tuple[str, Span], ...] = ()  # where the include gives each of them
     # the directory launch runs the file from: the include's path (an installed share directory
     # for FindPackageShare), not where its source is; "" for the file's own directory
     dir: str = ""
@@ -403,6 +404,7 @@ class Instantiator:
             name=a.name, span=a.name_span or a.span, file=self.frame.file, default=default,
             default_known=a.default is None or default is not None, has_default=a.default is not None,
             choices=a.choices, value=value, value_origin=origin,  # type: ignore[arg-type]
+            value_span=dict(self.frame.passed_at).get(a.name) if origin == "include" else None,
         )
         self.result.declared_args.append(decl)
         self.declared_by_name.setdefault(a.name, []).append(decl)

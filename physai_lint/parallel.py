@@ -243,7 +243,7 @@ FORK_MIN_ENV = "PHYSAI_LINT_FORK_MIN_FILES"
 # A rule missing from here is still right, only slower: it builds what it needs itself.
 SHARED_MEMOS: tuple[tuple[int, tuple[str, ...]], ...] = (
     # (what the memo costs, in the units of RULE_COST, to add to its rules' own; the rules)
-    (100, ("N104", "T102", "T104", "T201", "T202", "T203", "T204")),  # graphs
+    (100, ("N104", "T102", "T103", "T104", "T201", "T202", "T203", "T204")),  # graphs
     (80, ("P105", "P107", "P108", "P109", "P111", "P112")),  # effective parameters
     (45, ("L114", "U104")),  # every model object of each launch file (checks._util.ir_objects)
 )

@@ -180,7 +180,7 @@ def unused_remap(ctx: CheckContext) -> Iterator[Diagnostic]:
     # node it reaches uses it, or may use it (its interface unknown or not complete).
     for g in graphs(ctx):
         for node in g.launch.nodes:
-            if node.active is False:
+            if node.active is False or node.id in g.rejected:  # launch refuses it: it uses nothing
                 continue
             for i, r in enumerate(node.remaps):
                 if r.origin == "node" and (g.remap_used(node.id, i) or node.id not in g.known
@@ -306,7 +306,7 @@ def _set_remaps_matching_nothing(ctx: CheckContext, seen: set[object]) -> Iterat
     reached: dict[object, list[tuple[Any, NodeInstance, int]]] = {}
     for g in graphs(ctx):
         for node in g.launch.nodes:
-            if node.active is False or node.kind == "process":
+            if node.active is False or node.kind == "process" or node.id in g.rejected:
                 continue
             for i, r in enumerate(node.remaps):
                 if r.origin == "global" and r.span not in seen:

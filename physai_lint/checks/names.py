@@ -403,7 +403,7 @@ def _final_problem(name: str) -> str | None:
 def invalid_topic_name(ctx: CheckContext) -> Iterator[Diagnostic]:
     seen: set[object] = set()
     for g in graphs(ctx):
-        for e in g.endpoints:
+        for e in (*g.endpoints, *g.rejected_endpoints):
             node = g.node(e.node)
             reason = _written_problem(e.written)
             written_bad = reason is not None

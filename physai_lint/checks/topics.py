@@ -188,7 +188,7 @@ def unused_remap(ctx: CheckContext) -> Iterator[Diagnostic]:
                     seen.add(r.span)
     for g in graphs(ctx):
         for node in g.launch.nodes:
-            if node.id not in g.known or node.active is False:
+            if node.id not in g.known or node.active is False or node.id in g.rejected:
                 continue
             if not _trusted(ctx, node):
                 continue  # bundled declarations may omit optional topics: only trust declared ones

@@ -42,7 +42,10 @@ class SystemGraph:
     launch: LaunchResult
     endpoints: list[Endpoint] = field(default_factory=list)
     known: set[str] = field(default_factory=set)  # node ids whose interface is known
-    rejected: set[str] = field(default_factory=set)  # node ids launch refuses (invalid name)
+    # node ids launch refuses (an invalid name or namespace), and their endpoints: such a node
+    # never runs and connects to nothing; only the names its code uses are checked (N104)
+    rejected: set[str] = field(default_factory=set)
+    rejected_endpoints: list[Endpoint] = field(default_factory=list)
     # a lifecycle node whose name is unknown: its own endpoints (``~/transition_event``...) are
     # left out rather than unresolved, which would hide every dangling topic of the launch
     unnamed_lifecycle: bool = False
@@ -96,8 +99,7 @@ class SystemGraph:
         action the evaluator could not follow), which may start any node."""
         if self.launch.opaque:
             return True
-        active = [n for n in self.launch.nodes if n.active is not False and n.kind != "process"
-                  and n.id not in self.rejected]
+        active = [n for n in self.launch.nodes if n.active is not False and n.kind != "process"]
         return any(n.id not in self.known for n in active) or any(e.resolved is None for e in self.endpoints)
 
 
@@ -135,8 +137,9 @@ def build_graph(launch: LaunchResult, interfaces: Any, include_inactive: bool = 
         if node.kind == "process" or (node.active is False and not include_inactive):
             continue
         if name_rejected(node.name, node.namespace):
-            g.rejected.add(node.id)  # launch raises on it (N102/N103): it has no topics
-            continue
+            # launch raises on it (N102/N103): it never runs, so it connects to nothing; its
+            # endpoints stay for the rules about the names its code uses (N104)
+            g.rejected.add(node.id)
         iface = interfaces.get(node.package, node.executable) if interfaces is not None else None
         if iface is None:
             continue
@@ -156,8 +159,9 @@ def build_graph(launch: LaunchResult, interfaces: Any, include_inactive: bool = 
                     g.unnamed_lifecycle = True
                     continue
                 resolved, idx = apply_remaps(expanded, node) if expanded else (None, None)
-                g.endpoints.append(Endpoint(node.id, kind, name, expanded, resolved,
-                                            getattr(ep, "type", None), idx, getattr(ep, "when", ())))
+                (g.rejected_endpoints if node.id in g.rejected else g.endpoints).append(Endpoint(
+                    node.id, kind, name, expanded, resolved, getattr(ep, "type", None), idx,
+                    getattr(ep, "when", ())))
     return g
 
 

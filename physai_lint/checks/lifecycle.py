@@ -417,7 +417,7 @@ def unknown_extra_argument(ctx: CheckContext) -> Iterator[Diagnostic]:
     names = _extra_names(ctx.distro)
     refuses = names is _EXTRA_ARGS_NEW
     for node, rp in _extra_args(ctx):
-        if rp.name in names:
+        if rp.name in names or not rp.name:  # no name: one given by a substitution (not known)
             continue
         close = did_you_mean(rp.name, list(names))
         hint = f'; did you mean "{close[0]}"?' if close else ""

@@ -104,3 +104,7 @@ def test_a_component_switched_off_is_not_reported(demo_findings: Any):
         "ComposableNodeContainer(", "ComposableNodeContainer(condition=IfCondition('false'), ").replace(
         "from launch.actions import", "from launch.conditions import IfCondition\nfrom launch.actions import")
     assert demo_findings({"launch/a.launch.py": text}, "launch/a.launch.py", "S205") == []
+
+
+def test_a_name_given_by_a_substitution_is_not_known(demo_findings: Any):
+    assert _xml(demo_findings, "S206", "true", name="$(var flag)") == []

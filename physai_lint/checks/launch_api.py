@@ -147,7 +147,8 @@ def _signature_problems(call: CallFact, cls: str, misspelt: dict[str, str]) -> I
                   "rest by keyword"),
             key=f"{cls}:positional")
         return
-    missing = [p for p in _missing(call, cls) if p not in misspelt.values()]
+    missing = [p for p in _missing(call, cls)
+               if p not in misspelt.values() or not call.qualname.startswith(("launch.actions.", "launch_ros.actions."))]
     if missing:
         listed = ", ".join(f'"{m}"' for m in missing)
         yield Diagnostic(
@@ -173,7 +174,9 @@ def unknown_keyword_argument(ctx: CheckContext) -> Iterator[Diagnostic]:
             for kw, span in call.kwargs:
                 if kw in allowed:
                     continue
-                if kw in misspelt:
+                if kw in misspelt and call.qualname.startswith(("launch.actions.", "launch_ros.actions.")):
+                    # an action passes unknown keywords on to Action.__init__ (**kwargs): the missing
+                    # argument is what Python reports first; a description has no **kwargs
                     req = misspelt[kw]
                     yield Diagnostic(
                         "L001", span,

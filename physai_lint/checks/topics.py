@@ -209,14 +209,8 @@ def unused_remap(ctx: CheckContext) -> Iterator[Diagnostic]:
                     continue  # T104 explains this one better
                 seen.add(r.span)
                 names = sorted({e.expanded for e in eps if e.expanded})
-                relative = [n for n in names if n.rsplit("/", 1)[-1] == src.rsplit("/", 1)[-1]]
-                if relative and r.src.startswith("/"):
-                    detail = (f'; the node uses "{relative[0]}" (its relative name in namespace '
-                              f'"{node.namespace}"): write the rule as "{relative[0].rsplit("/", 1)[-1]}"')
-                elif relative:
-                    detail = f'; did you mean "{relative[0]}"?'
-                else:
-                    detail = "; its names are " + ", ".join(f'"{n}"' for n in names[:6]) if names else ""
+                detail = _relative_hint(r.src, src, names, node, "the node") or (
+                    "; its names are " + ", ".join(f'"{n}"' for n in names[:6]) if names else "")
                 yield Diagnostic(
                     "T102", r.span,
                     f'remap "{r.src}" matches no topic of {node.fqn or node.executable} '
@@ -299,6 +293,23 @@ def set_remap_no_effect(ctx: CheckContext) -> Iterator[Diagnostic]:
     yield from _set_remaps_matching_nothing(ctx, seen)
 
 
+def _relative_hint(written: str, src: str, names: list[str], node: NodeInstance, who: str) -> str:
+    """The hint for a rule matching none of ``names``: the node's name with the same last token
+    (an absolute rule for a relative name in a namespace), else ""."""
+    relative = [n for n in names if n.rsplit("/", 1)[-1] == src.rsplit("/", 1)[-1]]
+    if relative and written.startswith("/"):
+        return (f'; {who} uses "{relative[0]}" (a relative name in namespace "{node.namespace}"): '
+                f'write the rule as "{relative[0].rsplit("/", 1)[-1]}"')
+    return f'; did you mean "{relative[0]}"?' if relative else ""
+
+
+# Names rcl gives every node, through rcl_node_resolve_name like any other (so a rule may remap
+# them), that interfaces do not list: /rosout, /parameter_events and the parameter services.
+_EVERY_NODE_NAMES = frozenset({"rosout", "parameter_events", "describe_parameters", "get_parameters",
+                               "get_parameter_types", "list_parameters", "set_parameters",
+                               "set_parameters_atomically", "get_type_description"})
+
+
 def _set_remaps_matching_nothing(ctx: CheckContext, seen: set[object]) -> Iterator[Diagnostic]:
     """A SetRemap every node it reaches ignores: each has a complete, trusted interface (T102's
     conditions) and no name the rule matches once expanded in that node's namespace. One that a
@@ -313,7 +324,8 @@ def _set_remaps_matching_nothing(ctx: CheckContext, seen: set[object]) -> Iterat
                     reached.setdefault(r.span, []).append((g, node, i))
     for span, uses in reached.items():
         first = uses[0][1].remaps[uses[0][2]]
-        if first.src is None or first.src.startswith("__"):
+        if first.src is None or first.src.startswith("__") or \
+                first.src.rstrip("/").rsplit("/", 1)[-1] in _EVERY_NODE_NAMES:
             continue
         names: list[tuple[NodeInstance, str, list[str]]] = []
         for g, node, i in uses:
@@ -328,14 +340,7 @@ def _set_remaps_matching_nothing(ctx: CheckContext, seen: set[object]) -> Iterat
         else:
             seen.add(span)
             node, src, own = names[0]
-            relative = [n for n in own if n.rsplit("/", 1)[-1] == src.rsplit("/", 1)[-1]]
-            if relative and first.src.startswith("/"):
-                detail = (f'; {node.fqn or node.executable} uses "{relative[0]}" (a relative name in namespace '
-                          f'"{node.namespace}"): write the rule as "{relative[0].rsplit("/", 1)[-1]}"')
-            elif relative:
-                detail = f'; did you mean "{relative[0]}"?'
-            else:
-                detail = ""
+            detail = _relative_hint(first.src, src, own, node, node.fqn or node.executable or "the node")
             reach = ", ".join(sorted({n.fqn or n.executable or "?" for n, _, _ in names})[:4])
             yield Diagnostic(
                 "T103", span,

@@ -246,7 +246,7 @@ def parse_yaml_launch(path: str, text: str) -> FrontendResult:
         what, error = ("a mapping", "ValueError \"Expected entity `launch` to have children entities\"") \
             if isinstance(body, yaml.MappingNode) else \
             (f'the {"empty value" if not body.value else "scalar " + repr(body.value)}',
-             "a TypeError")
+             "an error (launch_yaml has no entities to read)")
         return FrontendResult(None, [*reader.diags, Diagnostic(
             "L010", Span(path, kspan.line, kspan.col, kspan.line, kspan.col + len("launch")),
             f'"launch" holds {what}, not a list of actions; launch_yaml fails loading the file with {error}',

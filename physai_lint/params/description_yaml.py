@@ -162,7 +162,7 @@ def _xacro_problem(path: str, node: _Node) -> Breakage | None:
                 continue
             for value in child.attrs[1::2]:
                 if "$" not in value and "\n" not in value:
-                    what = _line_problem(value + '"', False)  # printed between quotes
+                    what = _line_problem('"' + value + '"', False)  # printed between quotes
                     if what is not None:
                         return Breakage(path, child.line, value.strip()[:120], what)
             found = _xacro_problem(path, child)
@@ -175,9 +175,11 @@ def _xacro_problem(path: str, node: _Node) -> Breakage | None:
                 return found
         elif child[0] == "text" and child[1].strip() and "$" not in child[1]:
             body = child[1].strip("\n")
-            # followed by the closing tag or the next node's indentation, never by a line end
+            # after ">" (alone in its element) or the indentation, before the closing tag or the
+            # next node's indentation: its first line is taken as following ">" (no comment
+            # there), its last as never ending a line
             found = _verbatim_problem(path, child[2] + len(child[1]) - len(child[1].lstrip("\n")),
-                                      body.lstrip(" ") + "<")
+                                      ">" + body.lstrip(" ") + "<")
             if found is not None:
                 return found
     return None
@@ -193,4 +195,7 @@ def description_breakage(program: str, path: str, text: str) -> Breakage | None:
     if "xacro:eval-comments" in text:
         return None
     root = _tree(text)
-    return None if root is None else _xacro_problem(path, root)
+    try:
+        return None if root is None else _xacro_problem(path, root)
+    except RecursionError:  # nested deeper than the interpreter's stack: not worked out
+        return None

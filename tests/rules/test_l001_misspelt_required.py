@@ -44,3 +44,12 @@ def test_an_unrelated_unknown_keyword_keeps_both_findings(demo_findings: Any):
 def test_what_a_lost_keyword_holds_is_not_unused(demo_findings: Any):
     assert _found(demo_findings, "TimerAction(period=2.0, action=[record])", "L102") == []
     assert len(_found(demo_findings, "TimerAction(period=2.0, actions=[])", "L102")) == 1
+
+
+def test_a_description_without_kwargs_reports_the_unexpected_keyword(demo_findings: Any):
+    launch = LAUNCH.replace("from launch.substitutions import LaunchConfiguration",
+                            "from launch.substitutions import LaunchConfiguration\n"
+                            "from launch_ros.descriptions import ComposableNode")
+    text = launch.format(action="ComposableNode(pakage='image_proc', plugin='image_proc::RectifyNode') and record")
+    found = demo_findings({"launch/a.launch.py": text}, "launch/a.launch.py", "L001")
+    assert any("unexpected keyword argument 'pakage'" in m for _, m in found), found

@@ -108,3 +108,14 @@ def test_a_component_switched_off_is_not_reported(demo_findings: Any):
 
 def test_a_name_given_by_a_substitution_is_not_known(demo_findings: Any):
     assert _xml(demo_findings, "S206", "true", name="$(var flag)") == []
+
+
+def test_python_names_by_substitution_and_nested_dicts(demo_findings: Any):
+    assert _py(demo_findings, "S206", "True", name="x").__len__() == 1
+    text = PY.format(name="use_intra_process_comms", value="True", default="true").replace(
+        "{'use_intra_process_comms': True}", "{LaunchConfiguration('flag'): True}")
+    assert demo_findings({"launch/a.launch.py": text}, "launch/a.launch.py", "S206") == []
+    text = PY.format(name="use_intra_process_comms", value="True", default="true").replace(
+        "{'use_intra_process_comms': True}", "{'use': {'intra_process_comms': True}}")
+    (found,) = demo_findings({"launch/a.launch.py": text}, "launch/a.launch.py", "S206")
+    assert 'extra argument "use.intra_process_comms"' in found[1]

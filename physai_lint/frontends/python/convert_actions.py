@@ -439,13 +439,10 @@ class ActionBuilder:
                 continue
             extra: list[tuple[str, Value, Span]] = []
             ea = c.kwargs.get("extra_arguments")
+            whole = c.arg_span(-1, "extra_arguments")
             for d in ea if isinstance(ea, (list, tuple)) else []:
                 if isinstance(d, dict):
-                    spans = item_spans(d) if isinstance(item_spans(d), dict) else {}
-                    whole = c.arg_span(-1, "extra_arguments")
-                    for k, x in d.items():
-                        kspan, vspan = spans.get(k, (whole, whole))
-                        extra.append((str(k), to_pvalue(x, vspan), kspan))
+                    _extra_entries(d, "", whole, extra)
             out.append(L.ComposableNode(
                 opt_value(c, -1, "package"), opt_value(c, -1, "plugin"), opt_value(c, -1, "name"),
                 opt_value(c, -1, "namespace"), to_params(c.kwargs.get("parameters"), c.arg_span(-1, "parameters")),
@@ -521,3 +518,18 @@ def _autostart(kw: dict[str, Any]) -> bool | None:
     if isinstance(v, Opaque):
         return None
     return bool(v)
+
+
+def _extra_entries(d: dict[Any, Any], prefix: str, span: Span, out: list[tuple[str, Any, Span]]) -> None:
+    """A component's ``extra_arguments`` dict as launch_ros normalizes it (``normalize_parameter_dict``:
+    nested dicts joined with "."); a key that is not a literal string has a name known only at
+    launch time (""), which no rule takes for a wrong one."""
+    found = item_spans(d)
+    spans = found if isinstance(found, dict) else {}
+    for k, x in d.items():
+        kspan, vspan = spans.get(k, (span, span))
+        name = f"{prefix}.{k}" if prefix and isinstance(k, str) else (k if isinstance(k, str) else "")
+        if isinstance(x, dict) and name:
+            _extra_entries(x, name, vspan, out)
+        else:
+            out.append((name, to_pvalue(x, vspan), kspan))

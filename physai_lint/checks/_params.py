@@ -98,3 +98,18 @@ def decl_source(source: str) -> str:
             part = (head + sep if tail.startswith("/") else "") + rel
         out.append(part)
     return " + ".join(out)
+
+
+def literal_markup_entry(ctx: CheckContext, prm: Any) -> Any:
+    """The ``<param value=...>`` of an XML/YAML launch file that launch parameter ``prm`` comes
+    from, when that value has no substitution (launch_xml's ``get_attr`` types it itself, when the
+    file is read); else None."""
+    from physai_lint.checks._util import ir_objects
+    from physai_lint.model.launch import ParamEntry
+    from physai_lint.model.values import PSubst, literal_of
+
+    file = getattr(prm.span, "file", "") or ""
+    if file not in ctx.launch_files:
+        return None
+    return next((o for o in ir_objects(ctx, file) if type(o) is ParamEntry and o.span == prm.span
+                 and type(o.value) is PSubst and isinstance(literal_of(o.value.value), str)), None)

@@ -7,6 +7,7 @@ from typing import Any
 
 from physai_lint.checks._util import relpath, suggestion
 from physai_lint.checks.base import CheckContext, rule
+from physai_lint.checks.markup import markup_problems
 from physai_lint.model.findings import Diagnostic, Related
 from physai_lint.model.launch import EVERY_CONFIGURATION
 
@@ -75,7 +76,7 @@ def unused_argument(ctx: CheckContext) -> Iterator[Diagnostic]:
                 continue
             if reads_all or _read_anywhere(ctx, arg.file, arg.name) or arg.name in _escaped(ctx, arg.file):
                 continue
-            if _rejected_markup(ctx, arg.file):
+            if markup_problems(ctx, arg.file):
                 continue  # launch refuses the file (L002): what it does not read is moot
             seen.add((arg.span, arg.name))
             yield Diagnostic(
@@ -84,21 +85,6 @@ def unused_argument(ctx: CheckContext) -> Iterator[Diagnostic]:
                 help=f'read it with LaunchConfiguration("{arg.name}") / $(var {arg.name}), '
                      "or remove the declaration",
                 key=arg.name)
-
-
-def _rejected_markup(ctx: CheckContext, file: str) -> bool:
-    """Whether launch rejects XML/YAML launch file ``file`` when it parses it (a tag or attribute
-    it does not know: L002), so that nothing in it runs and its reads are not all modelled."""
-    lf = ctx.launch_files.get(file)
-    if lf is None or lf.format not in ("xml", "yaml") or lf.markup is None:
-        return False
-    from physai_lint.checks.markup import _extension_tags
-    from physai_lint.frontends.tags import unknown_markup
-
-    memo = ctx.options.setdefault("_rejected_markup", {})
-    if file not in memo:
-        memo[file] = bool(unknown_markup(lf.markup, lf.format, lambda: _extension_tags(ctx), ctx.distro))
-    return bool(memo[file])
 
 
 def _escaped(ctx: CheckContext, file: str) -> tuple[str, ...]:

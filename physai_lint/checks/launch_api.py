@@ -5,65 +5,13 @@ from collections.abc import Iterator
 
 from physai_lint.checks._util import did_you_mean, python_facts, suggestion
 from physai_lint.checks.base import CheckContext, rule
+from physai_lint.frontends.python.signatures import ACTIONS as _A
+from physai_lint.frontends.python.signatures import ROS_ACTIONS as _R
+from physai_lint.frontends.python.signatures import keyword_tables as _tables
+from physai_lint.frontends.python.signatures import passes_unknown_keywords
 from physai_lint.model.findings import Diagnostic
 from physai_lint.model.launch import CallFact
 
-_ACTION = frozenset({"condition"})
-_EXEC_PROCESS = frozenset({"cmd", "prefix", "name", "cwd", "env", "additional_env"})
-_EXEC_LOCAL = frozenset({
-    "shell", "sigterm_timeout", "sigkill_timeout", "emulate_tty", "output", "output_format",
-    "cached_output", "log_cmd", "on_exit", "respawn", "respawn_delay",
-})
-_JAZZY_LOCAL = frozenset({"respawn_max_retries"})
-_NODE_OWN = frozenset({"executable", "package", "name", "namespace", "exec_name", "parameters",
-                       "remappings", "ros_arguments", "arguments"})
-
-
-def _tables(distro: str) -> dict[str, frozenset[str]]:
-    local = _EXEC_LOCAL | (_JAZZY_LOCAL if distro != "humble" else frozenset())
-    process = _ACTION | _EXEC_PROCESS | local
-    node = _ACTION | _NODE_OWN | ((_EXEC_PROCESS - {"cmd", "name"}) | local)
-    a, r = _A, _R
-    return {
-        a + "ExecuteProcess": process,
-        a + "ExecuteLocal": _ACTION | local | {"process_description"},
-        r + "Node": node,
-        r + "LifecycleNode": node | ({"autostart"} if distro != "humble" else frozenset()),
-        r + "ComposableNodeContainer": node | {"composable_node_descriptions"},
-        "launch_ros.descriptions.ComposableNode": frozenset({
-            "package", "plugin", "name", "namespace", "parameters", "remappings", "extra_arguments",
-            "condition"}),
-        r + "LoadComposableNodes": _ACTION | {"composable_node_descriptions", "target_container"},
-        r + "PushRosNamespace": _ACTION | {"namespace"},
-        r + "SetRemap": _ACTION | {"src", "dst"},
-        r + "SetParameter": _ACTION | {"name", "value"},
-        r + "SetParametersFromFile": _ACTION | {"filename"},
-        a + "IncludeLaunchDescription": _ACTION | {"launch_description_source", "launch_arguments"},
-        a + "GroupAction": _ACTION | {"actions", "scoped", "forwarding", "launch_configurations"},
-        a + "TimerAction": _ACTION | {"period", "actions", "cancel_on_shutdown"},
-        a + "DeclareLaunchArgument": _ACTION | {"name", "default_value", "description", "choices"},
-        a + "LogInfo": _ACTION | {"msg"},
-        a + "RegisterEventHandler": _ACTION | {"event_handler"},
-        a + "OpaqueFunction": _ACTION | {"function", "args", "kwargs"},
-        a + "SetLaunchConfiguration": _ACTION | {"name", "value"},
-        a + "SetEnvironmentVariable": _ACTION | {"name", "value"},
-    }
-
-
-_A, _R = "launch.actions.", "launch_ros.actions."
-
-
-def accepted_keywords(qualname: str) -> frozenset[str] | None:
-    """The keywords a launch API class takes in any distro (None: not a class known here). The
-    Python frontend notes the configurations in the others' values as read by code it cannot
-    follow: the action is never built as written, and its reads are not "unused" (L102)."""
-    global _ANY_DISTRO
-    if _ANY_DISTRO is None:
-        _ANY_DISTRO = _tables("rolling")
-    return _ANY_DISTRO.get(qualname)
-
-
-_ANY_DISTRO: dict[str, frozenset[str]] | None = None
 # Parameters that may be given positionally, in order (the rest are keyword-only), and the
 # parameters without a default; the same in humble, jazzy and rolling (launch f31c1ff1/02595baf,
 # launch_ros 25a207ca/f9ab9371 ``__init__`` signatures).
@@ -148,7 +96,7 @@ def _signature_problems(call: CallFact, cls: str, misspelt: dict[str, str]) -> I
             key=f"{cls}:positional")
         return
     missing = [p for p in _missing(call, cls)
-               if p not in misspelt.values() or not call.qualname.startswith(("launch.actions.", "launch_ros.actions."))]
+               if p not in misspelt.values() or not passes_unknown_keywords(call.qualname)]
     if missing:
         listed = ", ".join(f'"{m}"' for m in missing)
         yield Diagnostic(
@@ -174,7 +122,7 @@ def unknown_keyword_argument(ctx: CheckContext) -> Iterator[Diagnostic]:
             for kw, span in call.kwargs:
                 if kw in allowed:
                     continue
-                if kw in misspelt and call.qualname.startswith(("launch.actions.", "launch_ros.actions.")):
+                if kw in misspelt and passes_unknown_keywords(call.qualname):
                     # an action passes unknown keywords on to Action.__init__ (**kwargs): the missing
                     # argument is what Python reports first; a description has no **kwargs
                     req = misspelt[kw]

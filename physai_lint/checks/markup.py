@@ -14,13 +14,23 @@ from physai_lint.model.findings import Diagnostic
 from physai_lint.model.values import BoolOp, Compare, FileContent, IfElse, Unknown
 
 
+def markup_problems(ctx: CheckContext, path: str) -> list[tuple[Any, str, str | None]]:
+    """What launch rejects in XML/YAML launch file ``path`` when it parses it (``unknown_markup``:
+    tags and attributes it does not know), once per run; [] for any other file."""
+    lf = ctx.launch_files.get(path)
+    if lf is None or lf.format not in ("xml", "yaml") or lf.markup is None:
+        return []
+    memo = ctx.options.setdefault("_markup_problems", {})
+    if path not in memo:
+        memo[path] = unknown_markup(lf.markup, lf.format, lambda: _extension_tags(ctx), ctx.distro)
+    return memo[path]  # type: ignore[no-any-return]
+
+
 @rule("L002", "unknown-attribute")
 def unknown_attribute(ctx: CheckContext) -> Iterator[Diagnostic]:
     for path in sorted(ctx.launch_files):
         lf = ctx.launch_files[path]
-        if lf.format not in ("xml", "yaml") or lf.markup is None:
-            continue
-        for span, message, hint in unknown_markup(lf.markup, lf.format, lambda: _extension_tags(ctx), ctx.distro):
+        for span, message, hint in markup_problems(ctx, path):
             if hint and " " not in hint:
                 help_ = f'did you mean "{hint}"?'
             else:

@@ -302,17 +302,13 @@ def _frontend_rejects(ctx: CheckContext, prm: Any) -> bool:
     fails later; launch_yaml reads typed YAML instead (``frontends/attributes.py``)."""
     import yaml
 
-    from physai_lint.checks._util import ir_objects
+    from physai_lint.checks._params import literal_markup_entry
     from physai_lint.frontends.attributes import get_attr_rejects
-    from physai_lint.model.launch import ParamEntry
-    from physai_lint.model.values import PSubst, literal_of
 
-    file = getattr(prm.span, "file", "") or ""
-    if not file.endswith(".xml") or file not in ctx.launch_files:
+    if not (getattr(prm.span, "file", "") or "").endswith(".xml"):
         return False
-    if not any(type(o) is ParamEntry and o.span == prm.span and type(o.value) is PSubst
-               and o.value.sep is None and isinstance(literal_of(o.value.value), str)
-               for o in ir_objects(ctx, file)):
+    entry = literal_markup_entry(ctx, prm)
+    if entry is None or entry.value.sep is not None:
         return False
     try:
         items = yaml.safe_load(prm.raw)

@@ -22,7 +22,13 @@ import re
 from collections.abc import Iterator
 from typing import Any
 
-from physai_lint.checks._params import declarations, effective, interface, nodes_with_params
+from physai_lint.checks._params import (
+    declarations,
+    effective,
+    interface,
+    literal_markup_entry,
+    nodes_with_params,
+)
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic
 from physai_lint.model.span import Span
@@ -211,17 +217,6 @@ def _yaml_outcome(text: str) -> tuple[str, str] | None:
     return ("mapping", "") if isinstance(pyyaml_type(text), dict) else None
 
 
-def _markup_literal(ctx: CheckContext, prm: ResolvedParam) -> bool:
-    """Whether ``prm`` is an XML ``<param value=...>`` without substitutions: launch_xml's
-    ``get_attr`` types it itself (``coerce_to_type``, a text YAML cannot read stays a string)."""
-    from physai_lint.checks._util import ir_objects
-    from physai_lint.model.launch import ParamEntry
-    from physai_lint.model.values import PSubst, literal_of
-
-    return any(type(o) is ParamEntry and o.span == prm.span and type(o.value) is PSubst
-               and isinstance(literal_of(o.value.value), str) for o in ir_objects(ctx, prm.span.file))
-
-
 def _failure(ctx: CheckContext, prm: ResolvedParam, outcome: tuple[str, str]) -> tuple[str, str] | None:
     """(how launch reads the value, how it then fails) by the frontend ``prm`` comes from; None when
     that frontend keeps the text as it is."""
@@ -232,7 +227,7 @@ def _failure(ctx: CheckContext, prm: ResolvedParam, outcome: tuple[str, str]) ->
             "launch_ros fails evaluating it (TypeError \"" +
             ("Allowed value types are bytes, bool, int, float, str, Sequence[...]. Got <class 'dict'>"
              if dict_type else f"Unable to parse the value of parameter {prm.name} as yaml") + '")')
-    if file in ctx.launch_files and _markup_literal(ctx, prm):
+    if literal_markup_entry(ctx, prm) is not None:
         if not dict_type or not file.endswith(".xml"):
             return None  # launch_xml keeps a text YAML cannot read; launch_yaml's values are typed
         return "an XML value without substitutions is typed with YAML rules when the file is read", (
@@ -290,10 +285,12 @@ def _printed_description(ctx: CheckContext, node: NodeInstance, prm: ResolvedPar
         return None
     program, path = printed
     loc = locate(path)
-    text = read(loc.source) if loc.status == "ok" and loc.source else None
+    if loc.status != "ok" or not loc.source:
+        return None
     memo = ctx.options.setdefault("_printed_descriptions", {})
     key = (program, loc.source)
-    if key not in memo:
+    if key not in memo:  # several nodes are given one description: its file is scanned once
+        text = read(loc.source)
         memo[key] = None if text is None else description_breakage(program, loc.source, text)
     broken = memo[key]
     if broken is None:

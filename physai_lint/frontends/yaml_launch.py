@@ -15,6 +15,7 @@ import yaml
 
 from physai_lint.frontends import FrontendResult
 from physai_lint.frontends.markup import Attr, Element, build_launch_file
+from physai_lint.frontends.tags import ACCEPTED
 from physai_lint.model.findings import Diagnostic
 from physai_lint.model.span import Span
 
@@ -143,8 +144,6 @@ class _Reader:
         elif isinstance(value, yaml.SequenceNode) and value.value and all(
                 isinstance(v, yaml.MappingNode) for v in value.value):
             self.visit(value)
-            from physai_lint.frontends.tags import ACCEPTED
-
             spec = ACCEPTED.get(el.tag)
             if spec is not None and spec.children is not None and name not in spec.children:
                 # a key the element does not take ("parameters:" for "param:"): launch rejects the

@@ -189,14 +189,9 @@ class Evaluator:
     def _command_line(self, command: v.Value, scope: Scope) -> str | None:
         """A command's text, ``FindExecutable(name=x)`` standing for its name ``x`` (where on PATH
         it is found does not matter to what the command prints); None when unknown."""
-        out: list[str] = []
-        for part in command:
-            text = self.eval(part.name, scope) if isinstance(part, v.FindExecutable) else self._part(part, scope)
-            if text is None:
-                self.eval(command, scope)  # the reads of the rest still happen
-                return None
-            out.append(text)
-        return "".join(out)
+        out: list[str | None] = [self.eval(part.name, scope) if isinstance(part, v.FindExecutable)
+                                 else self._part(part, scope) for part in command]  # every part read
+        return None if None in out else "".join(out)  # type: ignore[arg-type]
 
     def _config(self, p: v.LaunchConfig, scope: Scope) -> str | None:
         name = self.eval(p.name, scope)

@@ -606,7 +606,7 @@ def make_lobj(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any],
         if isinstance(v, (dict, list, tuple)):
             ev.kw_kinds[(id(node), k)] = type(v).__name__
     if kwargs and qual.startswith(("launch.actions.", "launch_ros.")):
-        from physai_lint.checks.launch_api import accepted_keywords
+        from .signatures import accepted_keywords
 
         accepted = accepted_keywords(qual)
         if accepted is not None and not accepted.issuperset(kwargs):  # L001: what they hold is lost

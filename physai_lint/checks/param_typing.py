@@ -222,19 +222,21 @@ def _failure(ctx: CheckContext, prm: ResolvedParam, outcome: tuple[str, str]) ->
     that frontend keeps the text as it is."""
     file = prm.span.file or ""
     dict_type = outcome[0] == "mapping"
-    if not file.endswith((".xml", ".yaml", ".yml")):
+    if not file.endswith((".xml", ".yaml", ".yml")) and not prm.wrapped:
         return "a substituted parameter value is read with YAML rules", (
             "launch_ros fails evaluating it (TypeError \"" +
             ("Allowed value types are bytes, bool, int, float, str, Sequence[...]. Got <class 'dict'>"
              if dict_type else f"Unable to parse the value of parameter {prm.name} as yaml") + '")')
-    if literal_markup_entry(ctx, prm) is not None:
+    if not prm.wrapped and literal_markup_entry(ctx, prm) is not None:
         if not dict_type or not file.endswith(".xml"):
             return None  # launch_xml keeps a text YAML cannot read; launch_yaml's values are typed
         return "an XML value without substitutions is typed with YAML rules when the file is read", (
             "launch_xml cannot read the attribute and the launch file fails to load (TypeError "
             f"\"Attribute 'value' of Entity 'param' expected to be of type 'None'.'{prm.raw}' can not be "
             "converted to one of those types\")")
-    return "a substituted parameter value is read with YAML rules", (
+    how = "ParameterValue without a value_type reads its text" if prm.wrapped else \
+        "a substituted parameter value is read"
+    return f"{how} with YAML rules", (
         f"launch fails evaluating it (ValueError \"Failed to convert '{prm.raw}' using yaml rules: " +
         ("output type is not allowed, got <class 'dict'>" if dict_type else "yaml.safe_load() failed") + '")')
 
@@ -272,6 +274,11 @@ def invalid_parameter_value(ctx: CheckContext) -> Iterator[Diagnostic]:
                     key=f"{node.fqn}:{prm.name}")
 
 
+def _wrap_help(name: str, instead: str, wrapped: bool) -> str:
+    return (f"{instead}{{'{name}': ParameterValue(Command([...]), value_type=str)}}" +
+            ("" if wrapped else " (from launch_ros.parameter_descriptions import ParameterValue)"))
+
+
 def _printed_description(ctx: CheckContext, node: NodeInstance, prm: ResolvedParam) -> Diagnostic | None:
     """P113 for ``{'robot_description': Command(['xacro ', file])}``: the file the command prints
     (a workspace file) holds a line that its output keeps and YAML cannot read as text."""
@@ -299,16 +306,21 @@ def _printed_description(ctx: CheckContext, node: NodeInstance, prm: ResolvedPar
     name = broken.path.rsplit("/", 1)[-1]
     fails = "passes a description cut there, or fails evaluating it" if "comment" in broken.what \
         else "fails evaluating it"
+    markup = (prm.span.file or "").endswith((".xml", ".yaml", ".yml"))
     error = ("ValueError \"Failed to convert '...' using yaml rules: yaml.safe_load() failed\""
-             if (prm.span.file or "").endswith((".xml", ".yaml", ".yml")) else
+             if prm.wrapped or markup else
              f'TypeError "Unable to parse the value of parameter {prm.name} as yaml"')
+    how = "given without type=\"str\"" if markup else \
+        "given as ParameterValue without value_type=str" if prm.wrapped else \
+        "not wrapped in ParameterValue(..., value_type=str)"
+    instead = ('add type="str" to the param: the description is then passed as it is' if markup else
+               "add value_type=str: " if prm.wrapped else "wrap the command: ")
     return Diagnostic(
         "P113", prm.span,
         f'parameter "{prm.name}" of {node.fqn or node.executable} is the output of "{program} {name}", '
-        f"not wrapped in ParameterValue(..., value_type=str), which launch_ros reads with YAML rules; "
+        f"{how}, which launch reads with YAML rules; "
         f'{program} {kept} line {broken.line} of {name} ("{broken.snippet}"), where '
         f"{broken.what}: launch {fails} ({error})",
-        help=f"wrap the command: {{'{prm.name}': ParameterValue(Command([...]), value_type=str)}} "
-             "(from launch_ros.parameter_descriptions import ParameterValue)",
+        help=instead if markup else _wrap_help(prm.name, instead, prm.wrapped),
         related=(Related(Span.point(broken.path, broken.line), f"the line {program} {kept}"),),
         key=f"{node.fqn}:{prm.name}")

@@ -299,13 +299,16 @@ class PSubst:
     """A value made of substitutions (or an XML/YAML ``value=`` string): evaluated, then YAML-typed.
 
     ``value_type`` is ``"str"`` for ``ParameterValue(..., value_type=str)`` / ``type="str"``, or another
-    declared type name, or ``None`` for YAML typing. ``sep`` is XML/YAML ``value-sep``.
+    declared type name, or ``None`` for YAML typing. ``sep`` is XML/YAML ``value-sep``. ``wrapped``:
+    a Python ``ParameterValue(...)`` without a type, which launch's ``coerce_to_type`` reads (it
+    raises ValueError where a bare substitution gets launch_ros's TypeError).
     """
 
     value: Value
     value_type: str | None = None
     span: Span | None = None
     sep: str | None = None
+    wrapped: bool = False
 
 
 @dataclass(frozen=True, slots=True)

@@ -77,6 +77,7 @@ class ResolvedParam:
     # The command line of a value that is one Command([...]) typed by YAML, when known: its output
     # (never run) is what launch reads with YAML rules (P113 looks at the file it prints)
     command: str | None = None
+    wrapped: bool = False  # PSubst.wrapped: a Python ParameterValue without a type
 
 
 @fast_init

@@ -90,7 +90,7 @@ def resolve_pvalue(
     if isinstance(pv, v.PSubst):
         text = evaluate(pv.value)
         if text is None:
-            return ResolvedParam(name, None, span, None, "yaml")
+            return ResolvedParam(name, None, span, None, "yaml", wrapped=pv.wrapped)
         scalar = (pv.value_type or "")[len("list_of_"):] if (pv.value_type or "").startswith("list_of_") \
             else pv.value_type
         if pv.sep is not None:
@@ -108,7 +108,7 @@ def resolve_pvalue(
             return ResolvedParam(name, text, span, text, "forced")
         if pv.value_type in _COERCE:
             return ResolvedParam(name, _coerce(text, pv.value_type), span, text, "forced")
-        return ResolvedParam(name, yaml_type(text), span, text, "yaml")
+        return ResolvedParam(name, yaml_type(text), span, text, "yaml", wrapped=pv.wrapped)
     if isinstance(pv, v.PList):
         items = [resolve_pvalue(name, item, evaluate, span).value for item in pv.items]
         if any(x is None or isinstance(x, list) for x in items):

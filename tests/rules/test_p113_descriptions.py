@@ -98,3 +98,10 @@ def test_an_xml_command_fails_in_coerce_to_type(demo_findings: Any):
     found = _check(demo_findings, "  <!-- Chassis: 0.5 m -->", launch=launch.replace("{", "{{").replace("}", "}}"),
                    entry="launch/a.launch.xml")
     assert len(found) == 1 and found[0][0] == 3 and "Failed to convert" in found[0][1], found
+    assert 'given without type="str"' in found[0][1] and "ParameterValue" not in found[0][1], found
+
+
+def test_a_parameter_value_without_a_type_fails_in_coerce_to_type(demo_findings: Any):
+    found = _check(demo_findings, "  <!-- Chassis: 0.5 m -->", value=f"ParameterValue({COMMAND})")
+    assert len(found) == 1 and "given as ParameterValue without value_type=str" in found[0][1], found
+    assert "ValueError" in found[0][1] and "TypeError" not in found[0][1]

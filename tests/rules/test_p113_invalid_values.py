@@ -83,3 +83,18 @@ def test_an_xml_literal_mapping_fails_loading_the_file_and_an_unreadable_one_sta
 def test_a_node_that_never_starts_is_not_reported(demo_findings: Any):
     text = XML.format(value="$(var v)", default="map: odom").replace('name="talker">', 'name="talker" if="false">')
     assert demo_findings({"launch/a.launch.xml": text}, "launch/a.launch.xml", "P113") == []
+
+
+@pytest.mark.parametrize(("default", "says"), [
+    ("map: odom", "Failed to convert 'map: odom' using yaml rules: output type is not allowed"),
+    ("a: {", "Failed to convert 'a: {' using yaml rules: yaml.safe_load() failed"),
+])
+def test_a_parameter_value_without_a_type_fails_in_coerce_to_type(demo_findings: Any, default: str, says: str):
+    # ParameterValue.evaluate -> perform_typed_substitution -> coerce_to_type(None): ValueError,
+    # not evaluate_parameter_dict's TypeError for a bare substitution (humble launch_ros 0.19.8)
+    text = PY.format(value="ParameterValue(LaunchConfiguration('v'))", default=default).replace(
+        "from launch_ros.actions import Node",
+        "from launch_ros.actions import Node\nfrom launch_ros.parameter_descriptions import ParameterValue")
+    found = demo_findings({"launch/a.launch.py": text}, "launch/a.launch.py", "P113")
+    assert len(found) == 1 and says in found[0][1] and "ParameterValue without a value_type" in found[0][1], found
+    assert "TypeError" not in found[0][1]

@@ -222,7 +222,7 @@ def to_pvalue(v: Any, span: Span) -> PValue:
         vt_name = vt.qual.rsplit(".", 1)[-1] if hasattr(vt, "qual") else (None if vt is None else str(vt))
         if vt_name is None and isinstance(inner, _SCALARS):
             return to_pvalue(inner, span)
-        return PSubst(to_value(inner, v.arg_span(0, "value")), vt_name, v.span)
+        return PSubst(to_value(inner, v.arg_span(0, "value")), vt_name, v.span, wrapped=vt_name is None)
     if isinstance(v, Opaque):
         return PUnknown(v.reason, v.span or span)
     if isinstance(v, SymStr):

@@ -45,7 +45,9 @@ def _spec(attrs: set[str] | frozenset[str], children: set[str] | frozenset[str] 
 
 
 ACCEPTED: dict[str, TagSpec] = {
-    "launch": _spec({"version"}, ACTION_TAGS, action=False),
+    # Parser.parse_description reads "deprecated" and never asks the root whether all was read:
+    # any other attribute of the root is ignored, not refused (see unknown_markup)
+    "launch": _spec({"version", "deprecated"}, ACTION_TAGS, action=False),
     "arg": _spec({"name", "default", "description"}, {"choice"}),
     "choice": _spec({"value"}, parents={"arg"}, action=False),
     "let": _spec({"name", "value"}),
@@ -160,6 +162,8 @@ def unknown_markup(facts: MarkupFacts, fmt: str = "xml", extension_tags: Callabl
             out.append((span, f'tag "{tag}" is not allowed inside "{parent}"', None))
         elif parent is None and tag != "launch":
             out.append((span, f'unexpected root tag "{tag}"', "launch"))
+        if parent is None and tag == "launch":
+            continue  # the root's attributes: launch reads "deprecated" and ignores the rest
         for name, name_span in attrs:
             if name in newer and tag in _PROCESS_TAGS:
                 out.append((name_span, f'attribute "{name}" on "{tag}" does not exist in {distro} '

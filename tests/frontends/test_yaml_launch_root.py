@@ -49,3 +49,18 @@ def test_a_list_under_a_key_the_element_does_not_take_is_reported_once_at_the_ke
     assert [(line, msg.split(";")[0]) for line, msg in found] == [(8, 'unknown tag "parameters"')]
     # launch refuses the file: the argument it declares is not "unused"
     assert demo_findings({"launch/a.launch.yaml": YAML_PARAMETERS}, "launch/a.launch.yaml", "L102") == []
+
+
+@pytest.mark.parametrize(("entry", "text"), [
+    ("launch/a.launch.yaml", 'launch:\n  deprecated: "use b.launch.yaml"\n  description: "the talker"\n'
+                             "  children:\n  - node:\n      pkg: demo_nodes_cpp\n      exec: talker\n"),
+    ("launch/a.launch.xml", '<launch deprecated="use b.launch.xml" author="me">\n'
+                            '  <node pkg="demo_nodes_cpp" exec="talker"/>\n</launch>\n'),
+])
+def test_the_root_reads_deprecated_and_ignores_other_attributes(demo_findings, entry: str, text: str):
+    # Parser.parse_description reads "deprecated" and never asserts the root entity was fully
+    # parsed (humble-rolling): the humble library loads both files
+    assert demo_findings({entry: text}, entry, "L002") == []
+    nested = text.replace("<node", '<group deprecated="x">\n  <node').replace("</launch>", "</group>\n</launch>")
+    if entry.endswith(".xml"):
+        assert [line for line, _ in demo_findings({entry: nested}, entry, "L002")] == [2]

@@ -255,12 +255,20 @@ def _wildcards_for_components(path: str, model: Any, users: list[tuple[Any, Any]
 @rule("P104", "parameter-file-structure")
 def structure(ctx: CheckContext) -> Iterator[Diagnostic]:
     components_only = _read_by_components_only(ctx)
+    loaded: set[str] | None = None
     for path in sorted(ctx.param_files):
         if path in components_only:
             continue
         for d in ctx.param_files[path].diagnostics:
-            if d.code == "P104" and not _templated(d):
-                yield d
+            if d.code != "P104" or _templated(d):
+                continue
+            if "${" in d.message:
+                if loaded is None:
+                    loaded = {src.source for _, node in all_nodes(ctx) for src in node.param_sources
+                              if isinstance(src, ResolvedParamFile)}
+                if path not in loaded:
+                    continue  # "${name}_controller:" in a file no node loads: a generator's template
+            yield d
 
 
 def _read_by_components_only(ctx: CheckContext, flat_only: bool = True) -> set[str]:

@@ -33,3 +33,23 @@ def test_a_plain_invalid_key_still_is(demo_findings: Any) -> None:
     files = {"launch/a.launch.py": LAUNCH,
              "config/arm.yaml": "/arm/dri ver:\n  ros__parameters:\n    rate: 10\n"}
     assert len(demo_findings(files, "launch/a.launch.py", "P104")) == 1
+
+
+GENERATOR_TEMPLATE = """controller_manager:
+  ros__parameters:
+    ${name}_controller:
+      type: position_controllers/GripperActionController
+
+${name}_controller:
+  ros__parameters:
+    joint: ${name}_knuckle_joint
+"""
+
+
+def test_a_placeholder_key_in_a_file_no_node_loads_is_a_generators_template(demo_findings: Any) -> None:
+    files = {"launch/a.launch.py": LAUNCH.replace("allow_substs=True", "allow_substs=False"),
+             "config/arm.yaml": "/arm/driver:\n  ros__parameters:\n    rate: 10\n",
+             "config/gripper.yaml": GENERATOR_TEMPLATE}
+    assert demo_findings(files, ".", "P104") == []
+    files["config/arm.yaml"] = GENERATOR_TEMPLATE  # loaded as it is: rcl's _validate_nodename refuses it
+    assert [line for line, _ in demo_findings(files, ".", "P104")] == [6]

@@ -114,14 +114,21 @@ def concatenation(ctx: CheckContext) -> Iterator[Diagnostic]:
         "percent": "formatted with % at description time",
         "str": "converted with str() at description time",
         "join": "joined into a str with str.join at description time",
+        "get_package_share": "passed to get_package_share_directory() at description time",
+        "get_package_prefix": "passed to get_package_prefix() at description time",
     }
     for path, facts in python_facts(ctx):
         for fact in facts.concatenations:
+            lookup = fact.how.startswith("get_package_")
             yield Diagnostic(
                 "L004", fact.span,
                 f"substitution {fact.detail} is {how_text.get(fact.how, fact.how)}: it is an object, "
-                "not a string, so this raises TypeError or produces its repr",
-                help="build the value as a list of parts ([LaunchConfiguration('x'), '.yaml']) or with "
+                "not a string, so this raises TypeError" + (
+                    ' ("expected string or bytes-like object")' if lookup else " or produces its repr"),
+                help="find the package when the launch runs: FindPackageShare(LaunchConfiguration('x')) "
+                     "(FindPackagePrefix), or call it inside an OpaqueFunction with "
+                     "LaunchConfiguration('x').perform(context)" if lookup else
+                     "build the value as a list of parts ([LaunchConfiguration('x'), '.yaml']) or with "
                      "PathJoinSubstitution([...])",
                 key=f"{fact.how}:{fact.detail}")
 

@@ -366,7 +366,8 @@ class ConcatFact:
     ``os.path.join(FindPackageShare('p'), 'x')``, f-string of a substitution (``how``)."""
 
     how: Literal["plus", "os.path.join", "path", "f-string", "format", "percent", "str", "join",
-                 "truth", "equals", "not-equals", "call", "condition"]
+                 "truth", "equals", "not-equals", "call", "condition", "get_package_share",
+                 "get_package_prefix"]
     span: Span
     detail: str
 

@@ -56,3 +56,37 @@ def test_text_only_printed_or_logged_is_not_reported(demo_findings):
     findings = demo_findings({"launch/a.launch.py": PRINTED}, "launch/a.launch.py", "L004")
     assert [(line, message.split(":")[0]) for line, message in findings] == [
         (13, 'substitution LaunchConfiguration("dof") is joined with + at description time')]
+
+
+PACKAGE_LOOKUP = """
+import os
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def load_yaml(package_name, file_path):
+    return os.path.join(get_package_share_directory(package_name), file_path)
+
+
+def generate_launch_description():
+    pkg = LaunchConfiguration("moveit_config_package")
+    kinematics = load_yaml(pkg, "config/kinematics.yaml")
+    return LaunchDescription([
+        DeclareLaunchArgument("moveit_config_package", default_value="demo_nodes_cpp"),
+        Node(package="demo_nodes_cpp", executable="talker", arguments=[kinematics]),
+    ])
+"""
+
+
+def test_a_substitution_given_to_a_package_lookup_raises_type_error(demo_findings):
+    # ament_index_python: "TypeError: expected string or bytes-like object, got 'LaunchConfiguration'"
+    # while generate_launch_description() runs, whatever is declared (the Kinova MoveIt launch idiom)
+    entry = "launch/a.launch.py"
+    (found,) = demo_findings({entry: PACKAGE_LOOKUP}, entry, "L004")
+    assert found[0] == 11 and 'LaunchConfiguration("moveit_config_package") is passed to ' \
+        "get_package_share_directory() at description time" in found[1], found
+    assert demo_findings({entry: PACKAGE_LOOKUP}, entry, "L101") == []  # not "declared too late"
+    assert demo_findings({entry: PACKAGE_LOOKUP}, entry, "L102") == []

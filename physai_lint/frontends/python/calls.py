@@ -350,6 +350,10 @@ def call_ref(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any], 
     if qual in ("ament_index_python.packages.get_package_share_directory", "ament_index_python.packages.get_package_prefix"):
         pkg = args[0] if args else kwargs.get("package_name")
         kind = "share" if qual.endswith("share_directory") else "prefix"
+        if symbolic.is_subst(pkg):  # the object, not its value: ament_index raises TypeError
+            ev.concat(f"get_package_{kind}", span, symbolic.shown_subst(pkg))
+            ev.escape([pkg])  # meant as a read of the configuration: no "declared but never read"
+            return Opaque(f"{qual.rsplit('.', 1)[-1]}() of a substitution raises TypeError", span)
         found = FindPackage(to_value(pkg, span), kind, span, eager=True)  # type: ignore[arg-type]
         ev.lookup(found)
         return SymStr((found,))

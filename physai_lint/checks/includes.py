@@ -17,7 +17,12 @@ def include_missing(ctx: CheckContext) -> Iterator[Diagnostic]:
             if inc.status not in ("missing", "not_installed") or inc.span in seen:
                 continue
             seen.add(inc.span)
-            if inc.status == "missing":
+            if inc.status == "missing" and not (inc.target or "/").startswith("/"):
+                msg = (f'included launch file "{inc.target}" is relative: launch opens it from the directory '
+                       "`ros2 launch` is started in, not from the package or this file")
+                fix = "give the installed path: PathJoinSubstitution([FindPackageShare('<package>'), 'launch', " \
+                      "'x.launch.py']) / $(find-pkg-share <package>)/launch/x.launch.xml, or ThisLaunchFileDir()"
+            elif inc.status == "missing":
                 msg = f'included launch file "{inc.target}" does not exist'
                 fix = "fix the path or the package name, or create the file"
             else:

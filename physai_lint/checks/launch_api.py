@@ -6,6 +6,7 @@ from collections.abc import Iterator
 from physai_lint.checks._util import did_you_mean, python_facts, suggestion
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.frontends.python.signatures import ACTIONS as _A
+from physai_lint.frontends.python.signatures import HANDLERS as _H
 from physai_lint.frontends.python.signatures import ROS_ACTIONS as _R
 from physai_lint.frontends.python.signatures import keyword_tables as _tables
 from physai_lint.frontends.python.signatures import passes_unknown_keywords
@@ -38,9 +39,15 @@ _REQUIRED: dict[str, tuple[str, ...]] = {
     _A + "TimerAction": ("period", "actions"),
     _A + "LogInfo": ("msg",),
     _A + "OpaqueFunction": ("function",),
+    _H + "OnProcessExit": ("on_exit",),
+    _H + "OnProcessStart": ("on_start",),
+    _H + "OnExecutionComplete": ("on_completion",),
+    _H + "OnShutdown": ("on_shutdown",),
+    "launch_ros.event_handlers.OnStateTransition": ("entities",),
     **_POSITIONAL,
 }
 
+_HANDLER_ENTITIES = frozenset({"on_exit", "on_start", "on_completion", "on_shutdown", "entities"})
 _NODE_LIKE = ("launch_ros.actions.Node", "launch_ros.actions.LifecycleNode",
               "launch_ros.actions.ComposableNodeContainer")
 _DASHING = {
@@ -72,7 +79,9 @@ def _misspelt_required(call: CallFact, cls: str, allowed: frozenset[str]) -> dic
     out = {}
     for kw, _span in call.kwargs:
         if kw not in allowed and missing:
-            close = did_you_mean(kw, missing)
+            # another handler's keyword (OnProcessExit(on_start=...)) is the same slip
+            close = did_you_mean(kw, missing) or (
+                missing[:1] if kw in _HANDLER_ENTITIES and missing[0] in _HANDLER_ENTITIES else [])
             if close:
                 out[kw] = close[0]
     return out

@@ -16,6 +16,10 @@ from physai_lint.resolve.model import ResolvedParamFile
 from physai_lint.resolve.names import name_rejected
 
 
+RELATIVE = ("is relative: launch opens it from the directory `ros2 launch` is started in, not from the "
+            "package or the launch file, so it is missing wherever else the launch is started")
+
+
 @rule("P101", "parameter-file-missing")
 def missing(ctx: CheckContext) -> Iterator[Diagnostic]:
     seen: set[object] = set()
@@ -26,11 +30,14 @@ def missing(ctx: CheckContext) -> Iterator[Diagnostic]:
                     continue
                 seen.add(src.span)
                 what = ("is empty" if not (src.path or "").strip()
-                        else "is a directory" if src.source and os.path.isdir(src.source) else "does not exist")
+                        else "is a directory" if src.source and os.path.isdir(src.source)
+                        else RELATIVE if not (src.path or "").startswith("/") else "does not exist")
                 shown = f'parameter file path "{src.path}"' if what != "does not exist" else f'parameter file "{src.path}"'
                 yield Diagnostic(
                     "P101", src.span, f"{shown} {what}; {_consequence(src, node)}",
-                    help="fix the path (package, folder or file name) or create the file",
+                    help="give the installed path: PathJoinSubstitution([FindPackageShare('<package>'), "
+                         "'config', 'x.yaml']) / $(find-pkg-share <package>)/config/x.yaml"
+                    if what == RELATIVE else "fix the path (package, folder or file name) or create the file",
                     key=src.path or "")
 
 

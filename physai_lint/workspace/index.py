@@ -373,7 +373,10 @@ class PackageIndex:
         rules."""
         found = self._located.get(path)
         if found is None:
-            found = self._located[path] = self._locate(_norm(path))
+            # launch opens a relative path from the directory ``ros2 launch`` runs in (open(),
+            # SourceFileLoader, rcl): not this linter's, nor the package's or the launch file's
+            found = self._located[path] = self._locate(_norm(path)) if path.startswith("/") else \
+                Located("missing", None, None)
         return found
 
     def _locate(self, path: str) -> Located:

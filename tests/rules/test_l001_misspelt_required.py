@@ -53,3 +53,26 @@ def test_a_description_without_kwargs_reports_the_unexpected_keyword(demo_findin
     text = launch.format(action="ComposableNode(pakage='image_proc', plugin='image_proc::RectifyNode') and record")
     found = demo_findings({"launch/a.launch.py": text}, "launch/a.launch.py", "L001")
     assert any("unexpected keyword argument 'pakage'" in m for _, m in found), found
+
+
+HANDLERS = LAUNCH.replace("GroupAction, TimerAction", "GroupAction, LogInfo, RegisterEventHandler, TimerAction\n"
+                          "from launch.event_handlers import OnProcessExit, OnProcessStart, OnShutdown")
+
+
+def _handler(demo_findings: Any, handler: str) -> list[tuple[int, str]]:
+    text = HANDLERS.format(action=f"record,\n        RegisterEventHandler({handler})")
+    return demo_findings({"launch/a.launch.py": text}, "launch/a.launch.py", "L001")
+
+
+def test_event_handlers_take_their_own_keywords(demo_findings: Any):
+    # humble launch 1.0.7: OnProcessExit(*, target_action=None, on_exit, **kwargs), the rest going
+    # to EventHandler(matcher, entities=None, handle_once=False)
+    found = _handler(demo_findings, "OnProcessExit(target_action=record, on_start=[LogInfo(msg='done')])")
+    assert len(found) == 1 and 'no keyword argument "on_start" (did you mean "on_exit"?)' in found[0][1], found
+    assert "missing 1 required keyword-only argument: 'on_exit'" in found[0][1]
+    found = _handler(demo_findings, "OnProcessStart(target_action=record, on_start=[], once=True)")
+    assert len(found) == 1 and "unexpected keyword argument 'once'" in found[0][1], found
+    found = _handler(demo_findings, "OnProcessExit(target_action=record)")
+    assert len(found) == 1 and 'missing the required argument "on_exit"' in found[0][1], found
+    assert _handler(demo_findings, "OnProcessExit(target_action=record, on_exit=[], handle_once=True)") == []
+    assert _handler(demo_findings, "OnShutdown(on_shutdown=[LogInfo(msg='bye')])") == []

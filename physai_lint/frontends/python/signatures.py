@@ -6,6 +6,7 @@ from __future__ import annotations
 import functools
 
 ACTIONS, ROS_ACTIONS = "launch.actions.", "launch_ros.actions."
+HANDLERS, ROS_HANDLERS = "launch.event_handlers.", "launch_ros.event_handlers."
 
 _ACTION = frozenset({"condition"})
 _EXEC_PROCESS = frozenset({"cmd", "prefix", "name", "cwd", "env", "additional_env"})
@@ -14,6 +15,7 @@ _EXEC_LOCAL = frozenset({
     "cached_output", "log_cmd", "on_exit", "respawn", "respawn_delay",
 })
 _JAZZY_LOCAL = frozenset({"respawn_max_retries"})
+_HANDLER = frozenset({"handle_once"})
 _NODE_OWN = frozenset({"executable", "package", "name", "namespace", "exec_name", "parameters",
                        "remappings", "ros_arguments", "arguments"})
 
@@ -24,7 +26,7 @@ def keyword_tables(distro: str) -> dict[str, frozenset[str]]:
     local = _EXEC_LOCAL | (_JAZZY_LOCAL if distro != "humble" else frozenset())
     process = _ACTION | _EXEC_PROCESS | local
     node = _ACTION | _NODE_OWN | ((_EXEC_PROCESS - {"cmd", "name"}) | local)
-    a, r = ACTIONS, ROS_ACTIONS
+    a, r, h = ACTIONS, ROS_ACTIONS, HANDLERS
     return {
         a + "ExecuteProcess": process,
         a + "ExecuteLocal": _ACTION | local | {"process_description"},
@@ -48,6 +50,15 @@ def keyword_tables(distro: str) -> dict[str, frozenset[str]]:
         a + "OpaqueFunction": _ACTION | {"function", "args", "kwargs"},
         a + "SetLaunchConfiguration": _ACTION | {"name", "value"},
         a + "SetEnvironmentVariable": _ACTION | {"name", "value"},
+        # keyword-only; what they do not name goes through **kwargs to EventHandler(matcher,
+        # entities, handle_once), which takes nothing else (launch event_handlers/*.py)
+        h + "OnProcessExit": _HANDLER | {"target_action", "on_exit"},
+        h + "OnProcessStart": _HANDLER | {"target_action", "on_start"},
+        h + "OnExecutionComplete": _HANDLER | {"target_action", "on_completion"},
+        h + "OnProcessIO": _HANDLER | {"target_action", "on_stdin", "on_stdout", "on_stderr"},
+        h + "OnShutdown": _HANDLER | {"on_shutdown"},
+        ROS_HANDLERS + "OnStateTransition": _HANDLER | {
+            "entities", "target_lifecycle_node", "transition", "start_state", "goal_state", "matcher"},
     }
 
 
@@ -60,7 +71,8 @@ def accepted_keywords(qualname: str) -> frozenset[str] | None:
 
 
 def passes_unknown_keywords(qualname: str) -> bool:
-    """Whether the class hands keywords it does not know on to ``Action.__init__`` (``**kwargs``),
-    so that a missing required argument is what Python reports first: every action; a
+    """Whether the class hands keywords it does not know on to ``Action.__init__`` or
+    ``EventHandler.__init__`` (``**kwargs``), so that a missing required argument is what Python
+    reports first: every action and event handler; a
     description (``ComposableNode``) raises on the unexpected keyword instead."""
-    return qualname.startswith((ACTIONS, ROS_ACTIONS))
+    return qualname.startswith((ACTIONS, ROS_ACTIONS, HANDLERS, ROS_HANDLERS))

@@ -10,11 +10,10 @@ from physai_lint.checks._util import all_nodes, switched_off_by, where
 from physai_lint.checks._util import relpath as _rel
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.interfaces.naming import name_note
-from physai_lint.params.typing import yaml_syntax_error
 from physai_lint.model.findings import Diagnostic, Related
+from physai_lint.params.typing import yaml_syntax_error
 from physai_lint.resolve.model import ResolvedParamFile
 from physai_lint.resolve.names import name_rejected
-
 
 RELATIVE = ("is relative: launch opens it from the directory `ros2 launch` is started in, not from the "
             "package or the launch file, so it is missing wherever else the launch is started")

@@ -226,6 +226,25 @@ def _wrong_type_text(f: TypeFact) -> tuple[str, str]:
                    "and gets only its keys, so the include fails with \"ValueError: too many values "
                    "to unpack (expected 2)\" (a two-letter key silently sets another argument)")
         return message, "pass launch_arguments={...}.items(), or a list of (name, value) tuples"
+    if f.kind == "period":
+        message = (f"{f.call} is given the {f.type} {f.value}, where launch accepts only a float, a string or "
+                   f"substitutions; building the launch description fails with \"TypeError: "
+                   f"'{f.call.split('(')[0]}' expected 'period' to be one of [str, Substitution, Iterable, float], "
+                   f"but got '{f.value}' of type {f.type}\"")
+        return message, (f"write it as a float: period={f.value}.0" if f.type == "int"
+                         else "write the number of seconds as a float, e.g. period=3.0")
+    if f.kind == "event":
+        message = (f"{f.call} is given {f.value}, which is no event: EmitEvent raises \"RuntimeError: "
+                   "EmitEvent() expected an event instance\" when the description is built")
+        help_ = ("emit the event: from launch.events import Shutdown; EmitEvent(event=Shutdown()); or use "
+                 "the launch.actions.Shutdown action itself, without EmitEvent"
+                 if "Shutdown" in f.value else "pass an event instance (launch.events.Shutdown(), "
+                 "launch_ros.events.lifecycle.ChangeState(...))")
+        return message, help_
+    if f.kind == "remap-bare":
+        message = (f"{f.call} is given {f.value}, one rule without its list: launch_ros takes each string "
+                   "for a rule and raises \"TypeError: Expected 'remap_rule' to be one of [<class 'tuple'>]\"")
+        return message, "put the rule in a list: remappings=[('from', 'to')]"
     if f.type == "dict":
         what = f"a dict ({f.value}), whose keys launch_ros takes as the rules"
         help_ = "pass a list of (from, to) tuples, e.g. remappings=[('/in', '/out')] or {...}.items()"

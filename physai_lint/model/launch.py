@@ -353,7 +353,8 @@ class TypeFact:
     argument as written (``DeclareLaunchArgument(default_value=...)``), ``value`` is the Python
     value's repr (shortened) and ``type`` its type's name."""
 
-    kind: Literal["text", "pairs", "remap", "plain-bool", "plain-number", "entities"]
+    kind: Literal["text", "pairs", "remap", "remap-bare", "plain-bool", "plain-number", "entities", "period",
+                  "event"]
     call: str
     value: str
     type: str

@@ -239,6 +239,9 @@ class ActionBuilder:
             return L.ExecuteProcess(i, s, cond, self._list_values(o.arg(-1, "cmd"), o.arg_span(-1, "cmd")),
                                     opt_value(o, -1, "name"), self._other(o))
         if n in ("TimerAction", "RosTimer"):
+            period = o.arg(0, "period")
+            if isinstance(period, int):  # ensure_argument_type: str, substitutions or float; bool is an int
+                self.ev.wrong_type("period", f"{n}(period=...)", period, o.arg_span(0, "period"))
             return L.Timer(i, s, cond, self._v(o, 0, "period"), self.actions(o.arg(1, "actions", []), s), n == "RosTimer")
         if n == "RegisterEventHandler":
             return self._handler(o, i, s, cond)
@@ -377,6 +380,10 @@ class ActionBuilder:
             # matters only between rules that match the same name; here in a fixed order
             v = sorted(v, key=repr)
         if isinstance(v, (list, tuple)):
+            if v and all(isinstance(rule, str) for rule in v):
+                # one rule without its list (remappings=('cmd_vel', 'cmd_vel_joy')): each string is
+                # taken for a rule
+                self.ev.wrong_type("remap-bare", f"{call}(remappings=...)", v, span)
             for k, rule in enumerate(v):
                 if isinstance(rule, list) and len(rule) == 2:  # normalize_remap_rule wants a tuple
                     self.ev.wrong_type("remap", f"{call}(remappings=[...])", rule, span_at(v, k, span))
@@ -491,6 +498,10 @@ class ActionBuilder:
 
     def _emit(self, o: LObj, i: str, s: Span, cond: L.Condition | None) -> L.Action:
         e = o.arg(-1, "event")
+        if isinstance(e, str) or (isinstance(e, LObj) and e.qual in api.ACTION_KINDS):
+            # EmitEvent.__init__: "expected an event instance" (launch.actions.Shutdown for
+            # launch.events.Shutdown)
+            self.ev.wrong_type("event", "EmitEvent(event=...)", e, o.arg_span(-1, "event"))
         if not isinstance(e, LObj):
             return L.EmitEvent(i, s, cond, "unknown")
         target_id = None

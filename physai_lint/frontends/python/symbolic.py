@@ -118,7 +118,8 @@ class Recorder:
     def wrong_type(self, kind: str, call: str, value: Any, span: Span) -> None:
         key = (call, span)
         if key not in self.wrong_types:
-            text = _shown(value)
+            # an action given where an event belongs: named in full (launch.actions.Shutdown)
+            text = f"{value.qual}(...)" if kind == "event" and isinstance(value, LObj) else _shown(value)
             if len(text) > 60:
                 text = text[:57] + "..."
             kind_name = "substitution" if is_subst(value) else \

@@ -7,8 +7,8 @@ from typing import Iterator
 
 from physai_lint.checks._util import python_facts
 from physai_lint.checks.base import CheckContext, rule
-from physai_lint.model.findings import Diagnostic
 from physai_lint.checks.markup import PY_NEWER
+from physai_lint.model.findings import Diagnostic
 from physai_lint.model.launch import NameFact, TypeFact
 
 NODE_CLASSES = ("launch_ros.actions.Node", "launch_ros.actions.LifecycleNode",

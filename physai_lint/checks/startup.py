@@ -1,4 +1,5 @@
-"""Startup order: S101 startup-cycle, S102 handler-never-fires, S103 invalid-timer-period."""
+"""Startup order: S101 startup-cycle, S102 handler-never-fires, S103 invalid-timer-period,
+S104 process-run-twice."""
 from __future__ import annotations
 
 import math
@@ -81,3 +82,43 @@ def invalid_timer_period(ctx: CheckContext) -> Iterator[Diagnostic]:
             seen.add(span)
             yield Diagnostic("S103", span, msg, help="give the period as a non-negative float, e.g. 3.0",
                              key=text)
+
+
+@rule("S104", "process-run-twice")
+def process_run_twice(ctx: CheckContext) -> Iterator[Diagnostic]:
+    from physai_lint.graph.plan import startup_cycles
+
+    seen: set[object] = set()
+    for launch in ctx.launches:
+        if not launch.repeated:
+            continue
+        nodes = {n.id: n for n in launch.nodes}
+        never: set[str] | None = None
+        for first, again, where in launch.repeated:
+            a, b = nodes.get(first), nodes.get(again)
+            if a is None or b is None or a.active is not True or b.active is not True:
+                continue  # a condition may keep one of the runs from happening
+            if never is None:  # a handler that never fires runs nothing
+                never = startup_cycles(launch, lambda n: effective(ctx, n)).never_starts
+            if first in never or again in never:
+                continue
+            span = where or b.span
+            if (span, b.span) in seen:
+                continue
+            seen.add((span, b.span))
+            what = a.executable or "process"
+            how = (f"the event handler at line {where.line} runs it again" if where is not None
+                   and a.span.file == where.file else "an event handler runs it again" if where is not None
+                   else "a timer runs it again" if b.in_timer else "the launch description runs it twice")
+            yield Diagnostic(
+                "S104", span,
+                f'the {_KIND.get(a.kind, "process")} action "{a.fqn or what}" ({a.package}/{what}) is one object run '
+                f"twice: {how}; launch runs an action object once, and the second run raises "
+                f"\"ExecuteLocal action '{what}-N': executed more than once\", which ends the launch",
+                help="run it once: drop the second reference, or build a second action (a function that "
+                     "returns a new Node(...) each time it is called)",
+                related=(Related(a.span, "the action"),) if span != a.span else (),
+                key=f"{a.action_id}")
+
+
+_KIND = {"node": "Node", "lifecycle_node": "LifecycleNode", "container": "ComposableNodeContainer"}

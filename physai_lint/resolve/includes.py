@@ -98,7 +98,7 @@ def include(inst: Instantiator, a: ir.Include, scope: Scope) -> None:
     scope.locals["_owner"] = source
     inst.frame = replace(fr, file=source, chain=fr.chain + (source,), passed=frozenset(passed),
                          passed_at=tuple((name, span) for name, _, span in args if isinstance(span, Span)),
-                         dir=posixpath.dirname(path))
+                         dir=posixpath.dirname(path), load=inst.next_load())
     try:
         inst.lookups(lf, scope)
         inst._walk(lf.actions, scope)

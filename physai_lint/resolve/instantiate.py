@@ -61,6 +61,9 @@ class Frame:
     # the directory launch runs the file from: the include's path (an installed share directory
     # for FindPackageShare), not where its source is; "" for the file's own directory
     dir: str = ""
+    # which load of the file's actions this is: each include and each run of an OpaqueFunction
+    # builds new action objects (the same action twice in one load is one object run twice)
+    load: int = 0
 
 
 @dataclass(slots=True)
@@ -108,6 +111,8 @@ class Instantiator:
         self.ev.on_dirname = self._on_dirname
         self.nodes = NodeBuilder(self)
         self.visited: dict[str, bool | None] = {}
+        self.loads = 0  # Frame.load of the last file loaded or function run
+        self.executed: dict[tuple[int, str], str] = {}  # (Frame.load, process action key) -> first node id
         # Which actions start: those visited outside any event handler (``free``), and, for those
         # visited only in handlers' actions, the targets each visit waits for (``triggered``: key
         # -> (the action, [target keys of one visit, ...])); ``NodeBuilder.finish`` closes it.
@@ -316,15 +321,20 @@ class Instantiator:
                 if self.visited.get(target, False) is not False and target not in self.deferred_visits:
                     self.late_handlers.setdefault(target, []).append(a)
         elif isinstance(a, ir.OpaqueAction):
-            if (a.reason and a.other or a.again) and self.specialize is not None \
-                    and self.specialized < MAX_SPECIALIZED:
-                self._opaque_function(a, scope)
-                return
-            if a.reason:
-                self._open(a)
-            for value in a.other:
-                self.ev.eval(value, scope)
-            self._walk(a.actions, scope)
+            outer = self.frame
+            self.frame = replace(outer, load=self.next_load())  # the function builds new objects
+            try:
+                if (a.reason and a.other or a.again) and self.specialize is not None \
+                        and self.specialized < MAX_SPECIALIZED:
+                    self._opaque_function(a, scope)
+                    return
+                if a.reason:
+                    self._open(a)
+                for value in a.other:
+                    self.ev.eval(value, scope)
+                self._walk(a.actions, scope)
+            finally:
+                self.frame = outer
         elif isinstance(a, ir.EmitEvent):
             if a.event in _CHANGE_STATE and self.frame.active is not False:
                 target = f"{self.frame.file}#{a.target_id}" if a.target_id else None
@@ -568,6 +578,10 @@ class Instantiator:
         self.handlers.clear()
 
     # ---- includes helpers used by resolve.includes ------------------------------------------------
+    def next_load(self) -> int:
+        self.loads += 1
+        return self.loads
+
     def new_record(self, rec: IncludeRecord) -> None:
         self.result.includes.append(rec)
 

@@ -224,6 +224,10 @@ class LaunchResult:
     blocked: list[str] = field(default_factory=list)
     # Timers: (span, period seconds or None when unknown, raw period text)
     timers: list[tuple[Span, float | None, str]] = field(default_factory=list)
+    # A process action object run again (ExecuteLocal.execute raises "executed more than once"):
+    # (the first run's node id, the later run's, the span of the event handler or timer that
+    # runs it again, or None when the description lists it twice)
+    repeated: list[tuple[str, str, Span | None]] = field(default_factory=list)
     # Packages referenced by FindPackageShare/$(find-pkg-share)/get_package_share_directory/...:
     # (name, span, file, whether the name came from a launch configuration, e.g. $(var model)_description)
     # (name, where, file, whether a launch configuration gave it: its name when it alone did)

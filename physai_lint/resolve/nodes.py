@@ -404,6 +404,11 @@ class NodeBuilder:
             spans={k: s for k, s in a.field_spans}, package_from_config=package_from_config, anon=anon,
         )
         self._register(inst_, inst_.action_id)
+        if fr.active is not False:
+            first = self.inst.executed.setdefault((fr.load, inst_.action_id), node_id)
+            if first != node_id:
+                again = fr.trigger[-1][2] if fr.trigger else None
+                self.inst.result.repeated.append((first, node_id, again))
         for value in a.other:
             self.inst.ev.eval(value, scope)
         for cn in a.composable_nodes:

@@ -12,7 +12,6 @@ from physai_lint.model.findings import Diagnostic, Related
 from physai_lint.resolve.nodes import EVENT_VERB, never_fires_help
 
 
-
 @rule("S101", "startup-cycle")
 def startup_cycle(ctx: CheckContext) -> Iterator[Diagnostic]:
     from physai_lint.graph.plan import startup_cycles

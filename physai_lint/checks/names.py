@@ -246,7 +246,7 @@ def invalid_node_name(ctx: CheckContext) -> Iterator[Diagnostic]:
     for _, node in all_nodes(ctx):
         if node.name is None or not node.name_explicit or node.kind == "process":
             continue
-        reason = names.validate_node_name(node.name)
+        reason = names.validate_node_name(node.name) or _passed_problem(node.name, "__node")
         span = node.spans.get("name", node.span)
         if reason and span not in seen:
             seen.add(span)
@@ -263,7 +263,7 @@ def invalid_namespace(ctx: CheckContext) -> Iterator[Diagnostic]:
         for span, raw, result in launch.pushed_namespaces:
             if result is None or span in seen:
                 continue
-            reason = names.validate_namespace(result)
+            reason = names.validate_namespace(result) or _passed_problem(result, "__ns")
             if reason:
                 seen.add(span)
                 yield Diagnostic(
@@ -272,7 +272,7 @@ def invalid_namespace(ctx: CheckContext) -> Iterator[Diagnostic]:
                     help='namespaces use letters, digits, "_" and "/", and no token starts with a digit',
                     key=result)
     bad_pushes = {result for launch in ctx.launches for _, _, result in launch.pushed_namespaces
-                  if result and names.validate_namespace(result)}
+                  if result and (names.validate_namespace(result) or names.rule_lex_problem(result))}
     for _, node in all_nodes(ctx):
         if node.namespace is None or node.kind == "process":
             continue
@@ -281,7 +281,7 @@ def invalid_namespace(ctx: CheckContext) -> Iterator[Diagnostic]:
         ns_span = node.spans.get("namespace")
         if ns_span is None or ns_span in seen:
             continue
-        reason = names.validate_namespace(node.namespace)
+        reason = names.validate_namespace(node.namespace) or _passed_problem(node.namespace, "__ns")
         if reason:
             seen.add(ns_span)
             yield Diagnostic("N103", ns_span, f'namespace "{node.namespace}" is invalid: {reason}',
@@ -292,8 +292,24 @@ def invalid_namespace(ctx: CheckContext) -> Iterator[Diagnostic]:
 def _remap_problem(name: str) -> str | None:
     if name.startswith("/"):
         return names.validate_full_topic_name(name) or (
-            None if len(name) <= names.TOPIC_MAX else f"topic name is longer than {names.TOPIC_MAX}")
-    return names.validate_topic_name(name)
+            None if len(name) <= names.TOPIC_MAX else f"topic name is longer than {names.TOPIC_MAX}") or \
+            _rule_problem(name)
+    return names.validate_topic_name(name) or _rule_problem(name)
+
+
+def _rule_problem(name: str) -> str | None:
+    """A name rcl accepts but cannot read in a ``-r`` rule, which launch gives it in."""
+    reason = names.rule_lex_problem(name)
+    return None if reason is None else f"{reason}: rcl exits at start-up with \"Couldn't parse remap rule\""
+
+
+def _passed_problem(name: str, what: str) -> str | None:
+    """A node name or namespace rmw accepts, which launch_ros passes to rcl as ``-r __node:=``/
+    ``-r __ns:=`` (a component's, in its load request, which rclcpp makes the same rules of)."""
+    reason = names.rule_lex_problem(name)
+    return None if reason is None else (
+        f'launch passes it to rcl as the rule "{what}:={name}", and {reason}; the node exits at '
+        "start-up with \"Couldn't parse remap rule\"")
 
 
 @rule("N105", "invalid-remap-name")
@@ -333,7 +349,8 @@ def invalid_remap(ctx: CheckContext) -> Iterator[Diagnostic]:
 
 @rule("N106", "name-style")
 def name_style(ctx: CheckContext) -> Iterator[Diagnostic]:
-    double = bool(ctx.option("N106", "double-underscore", True))
+    # "double-underscore" is read no more: a repeated "_" in these names does not parse in the -r
+    # rules launch gives them in (N102, N103, N105)
     trailing = bool(ctx.option("N106", "trailing-underscore", True))
     upper = bool(ctx.option("N106", "uppercase", False))
     seen: set[object] = set()
@@ -347,12 +364,10 @@ def name_style(ctx: CheckContext) -> Iterator[Diagnostic]:
         for what, value, span in named:
             if not value or span is None or (span, value) in seen or value.startswith("__"):
                 continue
-            if what.startswith("remap") and _remap_problem(value):
-                continue  # invalid: N105 reports it
+            if (what.startswith("remap") and _remap_problem(value)) or names.rule_lex_problem(value):
+                continue  # invalid: N105 reports it, or N102/N103 (a repeated "_" does not parse in a rule)
             tokens = [t for t in value.lstrip("~").split("/") if t and t not in _SPECIAL]
             problems = []
-            if double and any("__" in t for t in tokens):
-                problems.append('a repeated "_"')
             if trailing and any(t.endswith("_") for t in tokens):
                 problems.append('a part ending in "_"')
             if upper and any(c.isupper() for t in tokens for c in t):

@@ -94,6 +94,31 @@ def validate_namespace(ns: str) -> str | None:
     return None
 
 
+# One name part as rcl's remap-rule lexer reads it (rcl/src/rcl/lexer.c, states S9/S10 from a
+# letter, S3/S10 from "_"): a "_" must be followed by a letter or digit to go on, so a repeated "_"
+# ends the part ("a__b" lexes as "a_" and "_b"; test_lexer.cpp: "a_" from "a__bcd"). "{" and "}"
+# are no lexeme at all.
+_RULE_TOKEN = re.compile(r"[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)*_?|_[A-Za-z0-9]+(?:_[A-Za-z0-9]+)*_?|_")
+
+
+def rule_lex_problem(name: str) -> str | None:
+    """Why rcl cannot parse ``name`` inside a ``-r`` remap rule (``_rcl_parse_remap_rule``: each part
+    between "/" must be one lexer token), for a name that is otherwise valid; None when it can. Names
+    launch passes this way: remap rules, and node names and namespaces (``-r __node:=``, ``-r
+    __ns:=``, also in a component's load request)."""
+    body = name[2:] if name.startswith("~/") else name.lstrip("/") if name.startswith("/") else name
+    for part in body.split("/"):
+        if not part or _RULE_TOKEN.fullmatch(part):
+            continue
+        if "__" in part:
+            return (f'"{part}" has a repeated "_", where rcl\'s remap-rule lexer ends a name part, so the '
+                    "rule does not parse")
+        if "{" in part or "}" in part:
+            return f'"{part}" holds a substitution ("{{...}}"), which remap rules do not take'
+        return f'rcl\'s remap-rule lexer cannot read "{part}"'
+    return None
+
+
 def validate_topic_name(name: str) -> str | None:
     """rcl_validate_topic_name: a name as users write it (relative, ``~``, ``{node}``)."""
     if not name:

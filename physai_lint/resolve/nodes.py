@@ -91,14 +91,15 @@ def _rules(values: list[tuple[str, str | None, Span | None]]
 def rule_problem(src: str, dst: str) -> str | None:
     """Why rcl cannot parse the rule ``src:=dst`` (``_rcl_parse_remap_rule``), or None."""
     if src in ("__node", "__name"):
-        return names.validate_node_name(dst) and f'"{dst}" is not a valid node name'
+        return (names.validate_node_name(dst) and f'"{dst}" is not a valid node name') or \
+            names.rule_lex_problem(dst)
     if src == "__ns":
         if not dst.startswith("/"):
             return f'"{dst}" is not a fully qualified namespace (it must start with "/")'
-        return names.validate_namespace(dst)
+        return names.validate_namespace(dst) or names.rule_lex_problem(dst)
     for side in (src, dst):
         problem = (names.validate_full_topic_name(side) if side.startswith("/")
-                   else names.validate_topic_name(side))
+                   else names.validate_topic_name(side)) or names.rule_lex_problem(side)
         if problem:
             return f'"{side}": {problem}'
     return None

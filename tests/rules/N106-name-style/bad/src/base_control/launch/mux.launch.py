@@ -7,7 +7,7 @@ def generate_launch_description():
         Node(
             package='twist_mux',
             executable='twist_mux',
-            name='twist__mux',
+            name='twist_mux_',
             namespace='mobile_base',
         ),
     ])

@@ -12,8 +12,8 @@ from physai_lint.checks.topics import graphs
 from physai_lint.interfaces.naming import default_named, name_note
 from physai_lint.model.findings import Diagnostic, Related
 from physai_lint.resolve import names
-from physai_lint.resolve.nodes import rule_problem
 from physai_lint.resolve.model import LaunchResult, NodeInstance
+from physai_lint.resolve.nodes import rule_problem
 
 
 @rule("N101", "duplicate-node-name")

@@ -262,6 +262,7 @@ class EventHandler(ActionBase):
     actions: tuple["Action", ...]
     goal_state: str | None = None
     start_state: str | None = None
+    actions_span: Span | None = None  # where its actions are given (on_exit=[...])
 
 
 @dataclass(frozen=True, slots=True)

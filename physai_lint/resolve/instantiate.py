@@ -64,6 +64,7 @@ class Frame:
     # which load of the file's actions this is: each include and each run of an OpaqueFunction
     # builds new action objects (the same action twice in one load is one object run twice)
     load: int = 0
+    ran_by: Span | None = None  # the actions of the event handler that runs these (on_exit=[...])
 
 
 @dataclass(slots=True)
@@ -561,7 +562,7 @@ class Instantiator:
             trigger.append((key, h.event, h.span))
         self.nodes.watch(h, key, fr)
         self.deferred.append((h.actions, locals_,
-                              replace(fr, deferred=h.event, trigger=trigger,
+                              replace(fr, deferred=h.event, trigger=trigger, ran_by=h.actions_span or h.span,
                                       active=fr.active if h.event != "on_shutdown" else None), None))
 
     def add_edge(self, before: str, after: str, reason: str, span: Span, delay: float | None) -> None:

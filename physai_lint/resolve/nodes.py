@@ -408,7 +408,7 @@ class NodeBuilder:
         if fr.active is not False:
             first = self.inst.executed.setdefault((fr.load, inst_.action_id), node_id)
             if first != node_id:
-                again = fr.trigger[-1][2] if fr.trigger else None
+                again = fr.ran_by if fr.deferred not in (None, "timer") else None
                 self.inst.result.repeated.append((first, node_id, again))
         for value in a.other:
             self.inst.ev.eval(value, scope)

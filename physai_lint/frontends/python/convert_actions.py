@@ -494,7 +494,8 @@ class ActionBuilder:
         if h.kwargs.get("matcher") is not None:  # OnStateTransition then compares nothing else
             goal = start = None
         return L.EventHandler(i, s, cond, event, target_id, known, self.actions(entities, h.span),  # type: ignore[arg-type]
-                              str(goal) if isinstance(goal, str) else None, str(start) if isinstance(start, str) else None)
+                              str(goal) if isinstance(goal, str) else None, str(start) if isinstance(start, str) else None,
+                              h.arg_span(-1, key) if key in h.kwargs else None)
 
     def _emit(self, o: LObj, i: str, s: Span, cond: L.Condition | None) -> L.Action:
         e = o.arg(-1, "event")

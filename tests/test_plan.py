@@ -75,10 +75,10 @@ def test_cycle_plan_is_deadlock() -> None:
     p, _ = _plan(RULES / "S101-startup-cycle" / "bad", "src/demo/launch/x.launch.py")
     assert len(p.cycles) == 1 and p.cycles[0].deadlock
     assert p.cycles[0].text(p.labels) == "listener -> talker -> listener"
-    assert sum(len(s) for s in p.stages) == 2  # the cycle is condensed: still a plan
+    assert p.stages == []  # neither starts: they are listed apart, in no stage
     assert {p.labels[v] for v in p.never_starts} == {"listener", "talker"}
-    for fmt, mark in (("text", "NEVER STARTS"), ("mermaid", "linkStyle 0,1 stroke:#d00"),
-                      ("dot", "color=red"), ("json", '"never_starts": true')):
+    for fmt, mark in (("text", "Never starts (2)"), ("mermaid", "linkStyle 0,1 stroke:#d00"),
+                      ("dot", "cluster_never"), ("json", '"never_starts": true')):
         assert mark in render_plan(p, fmt, str(RULES)), fmt
 
 

@@ -285,13 +285,17 @@ def _topic_edges(graph: SystemGraph | None, ids: set[str]) -> list[PlanEdge]:
     return out
 
 
-def _startable(vertices: set[str], hard: list[PlanEdge], active: dict[str, bool | None]) -> set[str]:
+def _startable(vertices: set[str], hard: list[PlanEdge], active: dict[str, bool | None],
+               dead: frozenset[Any] = frozenset()) -> set[str]:
     """Vertices that can start: every handler trigger (edges grouped by handler span) has a
-    startable target instance (OR within a trigger, AND across nested triggers)."""
+    startable target instance (OR within a trigger, AND across nested triggers). A handler of
+    ``dead`` (the spans of handlers that never fire: ``LaunchResult.never_started``) starts nothing."""
     groups: dict[str, dict[Any, set[str]]] = {v: {} for v in vertices}
     for e in hard:
         if e.reason in HANDLER_REASONS and e.after in groups:
-            groups[e.after].setdefault((e.reason, e.span), set()).add(e.before)
+            befores = groups[e.after].setdefault((e.reason, e.span), set())
+            if e.span not in dead:
+                befores.add(e.before)
     ok: set[str] = set()
     changed = True
     while changed:
@@ -336,7 +340,8 @@ def _skeleton(launch: LaunchResult, effective_params: Callable[[NodeInstance], d
     off = {n.id for n in launch.nodes if n.active is False} - ids
     dead = [PlanEdge(se.before, se.after, se.reason, False, se.delay, se.span) for se in launch.edges
             if se.before in off and se.after in ids and not se.soft and se.reason in HANDLER_REASONS]
-    startable = _startable(ids | off, hard + dead, {**dict.fromkeys(off, False), **{n.id: n.active for n in nodes}})
+    startable = _startable(ids | off, hard + dead, {**dict.fromkeys(off, False), **{n.id: n.active for n in nodes}},
+                           frozenset(span for span, _ in launch.never_started))
     startable &= ids
     plan.never_starts = ids - startable
     # nodes only an action that never starts would start (a cycle through a TimerAction, a
@@ -404,12 +409,14 @@ def build_plan(launch: LaunchResult, graph: SystemGraph | None,
     H = _cycles(plan, ids, hard, startable, nx)
 
     # ---- stages from the hard edges (condensed); soft edges are shown, never move a stage -------------
+    # what never starts is no stage: it is listed apart (``Plan.never_starts``), and waits on nothing
+    H = H.subgraph(ids - plan.never_starts).copy() if plan.never_starts else H
     cond = nx.condensation(H)
     member = cond.graph["mapping"]
     D = nx.DiGraph(cond.edges())
     D.add_nodes_from(cond.nodes())
     hard_pairs = {(e.before, e.after) for e in hard}
-    soft = [e for e in _topic_edges(graph, ids)
+    soft = [e for e in _topic_edges(graph, ids - plan.never_starts)
             if member[e.before] != member[e.after] and (e.before, e.after) not in hard_pairs]
 
     for gen in nx.topological_generations(D):
@@ -421,7 +428,8 @@ def build_plan(launch: LaunchResult, graph: SystemGraph | None,
             v = plan.vertices[m]
             plan.vertices[m] = PlanVertex(v.id, v.label, v.fqn, v.kind, v.package, v.executable,
                                           v.file, v.line, v.active, v.delay, i)
-    order = {m: i for i, m in enumerate(m for s in plan.stages for m in s)}
+    never = sorted(plan.never_starts, key=lambda m: vertex_key(plan.vertices[m]))
+    order = {m: i for i, m in enumerate(m for s in [*plan.stages, never] for m in s)}
     plan.edges = sorted(hard + soft, key=lambda e: (e.soft, order[e.after], order[e.before], e.reason))
 
     # ---- critical path (hard edges, timer delays) --------------------------------------------------

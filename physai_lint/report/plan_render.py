@@ -6,7 +6,8 @@ JSON (``"version": 1``)::
 
     {"version": 1, "entry": "src/.../x.launch.py",
      "vertices": [{"id", "label", "fqn", "kind", "package", "executable", "file", "line",
-                   "stage", "delay", "active", "never_starts"}],          # in stage order
+                   "stage", "delay", "active", "never_starts"}],          # in stage order, then
+                                                                          # those that never start (stage 0)
      "stages": [["n1", "n2"], ["n3"]],                  # vertex ids, stage 1 first
      "edges": [{"before", "after", "reason", "soft", "delay", "file", "line", "against"}],
      "cycles": [{"nodes": [...], "text": "a -> b -> a", "deadlock": bool, "file", "line"}],
@@ -26,7 +27,12 @@ import json
 import os
 from typing import Any
 
-from physai_lint.graph.plan import Plan, PlanEdge, PlanVertex
+from physai_lint.graph.plan import Plan, PlanEdge, PlanVertex, vertex_key
+
+
+def _never(plan: Plan) -> list[str]:
+    """The vertices that never start (no stage), in plan order."""
+    return sorted(plan.never_starts, key=lambda v: vertex_key(plan.vertices[v]))
 
 FORMATS = ("text", "json", "dot", "mermaid")
 
@@ -144,13 +150,19 @@ def _text(plan: Plan, cwd: str) -> str:
     n_hard = sum(1 for e in plan.edges if not e.soft)
     n_soft = len(plan.edges) - n_hard
     console.print(f"Startup plan: {_rel(plan.entry, cwd)}")
-    n = len(plan.vertices)
-    console.print(f"{n} process{'' if n == 1 else 'es'} in {len(plan.stages)} stage(s); {n_hard} ordering "
-                  f"edge(s); {n_soft} topic need(s) (shown with ~, they do not change the stages)")
-    for i, stage in enumerate(plan.stages, 1):
+    never = _never(plan)
+    n = len(plan.vertices) - len(never)
+    console.print(f"{n} process{'' if n == 1 else 'es'} in {len(plan.stages)} stage(s)"
+                  + (f", {len(never)} that never start{'s' if len(never) == 1 else ''}" if never else "")
+                  + f"; {n_hard} ordering edge(s); {n_soft} topic need(s) (shown with ~, they do not change "
+                  "the stages)")
+    groups = [(f"Stage {i}: " + ("starts with the launch" if i == 1 else f"after stage {i - 1}"), stage)
+              for i, stage in enumerate(plan.stages, 1)]
+    if never:
+        groups.append(("Never starts", never))
+    for title, stage in groups:
         width = min(max(len(plan.vertices[v].label) for v in stage), 40)
-        title = "starts with the launch" if i == 1 else f"after stage {i - 1}"
-        tree = Tree(Text(f"Stage {i}: {title} ({len(stage)})"), guide_style="none")
+        tree = Tree(Text(f"{title} ({len(stage)})"), guide_style="none")
         for vid in stage:
             branch = tree.add(Text(_vertex_line(plan.vertices[vid], width, cwd, vid in plan.never_starts)))
             for line in _waits(plan, vid, cwd):
@@ -186,7 +198,7 @@ def _text(plan: Plan, cwd: str) -> str:
 # ---- json ------------------------------------------------------------------------------------------
 def _json(plan: Plan, cwd: str) -> dict[str, Any]:
     labels = plan.labels
-    verts = [plan.vertices[v] for s in plan.stages for v in s]
+    verts = [plan.vertices[v] for s in [*plan.stages, _never(plan)] for v in s]
     return {
         "version": 1,
         "entry": _rel(plan.entry, cwd),
@@ -227,9 +239,10 @@ def _edge_label(e: PlanEdge) -> str:
 def _dot(plan: Plan) -> str:
     out = ["digraph startup {", "  rankdir=LR;", "  node [shape=box, fontname=\"Helvetica\"];",
            "  edge [fontname=\"Helvetica\", fontsize=10];"]
-    for i, stage in enumerate(plan.stages, 1):
-        out.append(f"  subgraph cluster_stage_{i} {{")
-        out.append(f"    label={_q(f'stage {i}')};")
+    never = _never(plan)
+    for i, stage in enumerate([*plan.stages, never] if never else plan.stages, 1):
+        out.append(f"  subgraph cluster_stage_{i} {{" if stage is not never else "  subgraph cluster_never {")
+        out.append(f"    label={_q(f'stage {i}' if stage is not never else 'never starts')};")
         out.append("    style=rounded; color=gray;")
         for vid in stage:
             v = plan.vertices[vid]
@@ -264,8 +277,10 @@ def order_key(plan: Plan, vid: str) -> tuple[int, int]:
 
 def _mermaid(plan: Plan) -> str:
     out = ["flowchart LR"]
-    for i, stage in enumerate(plan.stages, 1):
-        out.append(f"  subgraph stage{i}[{_m(f'stage {i}')}]")
+    never = _never(plan)
+    for i, stage in enumerate([*plan.stages, never] if never else plan.stages, 1):
+        out.append(f"  subgraph stage{i}[{_m(f'stage {i}')}]" if stage is not never else
+                   f"  subgraph never[{_m('never starts')}]")
         for vid in stage:
             v = plan.vertices[vid]
             lbl = v.label + (f"<br/>{v.package}/{v.executable}" if v.package else "")

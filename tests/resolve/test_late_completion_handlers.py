@@ -72,3 +72,16 @@ def test_the_order_of_deferred_actions_is_not_judged(demo_findings, order):
 def test_a_handler_deferred_after_a_first_pass_target_is_late(demo_findings):
     text = TIMED.format(order="proc, TimerAction(period=1.0, actions=[h])")
     assert [line for line, _ in demo_findings({"launch/a.launch.py": text}, "launch/a.launch.py", "S102")] == [10]
+
+
+def test_the_plan_puts_what_a_dead_handler_starts_apart(demo_package):
+    from physai_lint.api_plan import compute_plan
+    from physai_lint.engine import CheckOptions
+
+    text = LAUNCH.format(event="OnExecutionComplete", kw="on_completion", order="can_up, handler")
+    pkg = demo_package({"launch/a.launch.py": text})
+    ws = pkg.parent.parent
+    plan, _ = compute_plan(CheckOptions(paths=[], workspace=str(ws)), "src/demo/launch/a.launch.py", cwd=str(ws))
+    labels = plan.labels
+    assert [[labels[v] for v in stage] for stage in plan.stages] == [["ip"]]
+    assert {labels[v] for v in plan.never_starts} == {"driver"}

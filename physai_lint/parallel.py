@@ -249,7 +249,7 @@ SHARED_MEMOS: tuple[tuple[int, tuple[str, ...]], ...] = (
 )
 # Rules that ask those memos about a few nodes only (lifecycle and controller managers, the target of a
 # "ros2 param" command): they compute these few wherever they run.
-LIGHT_MEMO_USERS = frozenset({"P110", "S101", "S201", "S202", "S204"})
+LIGHT_MEMO_USERS = frozenset({"P110", "S101", "S104", "S201", "S202", "S204"})
 
 # A static cost per rule: about its milliseconds on the real-workspace benchmark (1,180 files,
 # interfaces prefetched, medians of four -j2 runs; S101 imports networkx only for a launch whose

@@ -284,3 +284,32 @@ def test_nodes_behind_a_trigger_cycle_never_start(tmp_path, demo_package) -> Non
     demo_package({"launch/a.launch.py": LIFECYCLE.format(first="lidar", more="")})
     data = json.loads(plan(opts, "src/demo/launch/a.launch.py", "json", cwd=str(tmp_path)))
     assert not any(v["never_starts"] for v in data["vertices"]) and data["never_started"] == []
+
+
+def test_never_starting_vertices_render_in_one_order_whatever_the_hash_seed(tmp_path) -> None:
+    import subprocess
+    import sys
+
+    launch = tmp_path / "src" / "demo" / "launch"
+    launch.mkdir(parents=True)
+    (launch.parent / "package.xml").write_text(
+        '<?xml version="1.0"?>\n<package format="3"><name>demo</name><version>0.0.1</version>'
+        '<description>d</description><maintainer email="m@example.com">m</maintainer><license>MIT</license>'
+        '<buildtool_depend>ament_cmake</buildtool_depend><export><build_type>ament_cmake</build_type></export>'
+        '</package>\n')
+    (launch.parent / "CMakeLists.txt").write_text(
+        "project(demo)\ninstall(DIRECTORY launch DESTINATION share/${PROJECT_NAME})\n")
+    (launch / "a.launch.py").write_text(
+        "from launch import LaunchDescription\nfrom launch.actions import ExecuteProcess, RegisterEventHandler\n"
+        "from launch.event_handlers import OnProcessExit\nfrom launch_ros.actions import Node\n\n\n"
+        "def generate_launch_description():\n"
+        "    check = ExecuteProcess(cmd=['true'])\n"
+        "    nodes = [Node(package='demo_nodes_cpp', executable='talker', name=f'n{i}') for i in range(4)]\n"
+        "    return LaunchDescription([RegisterEventHandler(OnProcessExit(target_action=check, on_exit=nodes))])\n")
+    outs = set()
+    for seed in ("1", "2", "3"):
+        out = subprocess.run([sys.executable, "-m", "physai_lint", "plan", "src/demo/launch/a.launch.py",
+                              "--workspace", str(tmp_path), "--format", "mermaid"], cwd=tmp_path, text=True,
+                             capture_output=True, env={**os.environ, "PYTHONHASHSEED": seed}, check=False).stdout
+        outs.add(out)
+    assert len(outs) == 1 and "class n1,n2,n3,n4 never" in outs.pop()

@@ -110,7 +110,7 @@ def test_n106_switches(tmp_path, demo_package) -> None:
     found = _codes(_run(tmp_path, demo_package), "N106")
     assert found == [('namespace "/Front_Lidar_" has a part ending in "_" (rcl accepts '
                       'it, but the ROS 2 naming design rules it out)')]
-    found = _codes(_run(tmp_path, demo_package, n106={"double-underscore": False, "uppercase": True}), "N106")
+    found = _codes(_run(tmp_path, demo_package, n106={"uppercase": True}), "N106")
     assert found == [('namespace "/Front_Lidar_" has a part ending in "_" and capital letters (rcl accepts '
                       'it, but the ROS 2 naming design rules it out)')]
     assert _codes(_run(tmp_path, demo_package, n106={"trailing-underscore": False}), "N106") == []

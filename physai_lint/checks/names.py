@@ -22,10 +22,13 @@ def duplicate_node_name(ctx: CheckContext) -> Iterator[Diagnostic]:
     for launch in ctx.launches:
         first: dict[str, list[NodeInstance]] = {}
         exits: _Edges | None = None
+        # the second run of one action object is S104's (launch raises, no second node starts);
+        # what a handler whose target never runs would start never starts
+        not_started = {again for _, again, _ in launch.repeated} | set(launch.unstartable)
         for node in launch.nodes:
             # Only nodes certainly started under the analysed arguments: a condition that cannot be
             # evaluated (an unknown PythonExpression, say) often excludes the other node.
-            if node.kind == "process" or node.active is not True or not _named(node):
+            if node.kind == "process" or node.active is not True or not _named(node) or node.id in not_started:
                 continue
             fqn = node.fqn or _anon_fqn(node)
             if not fqn:

@@ -270,7 +270,7 @@ def invalid_parameter_value(ctx: CheckContext) -> Iterator[Diagnostic]:
                     f'parameter "{prm.name}" of {node.fqn or node.executable}: value "{prm.raw}" {what}; '
                     f"{found[0]}, and {found[1]}",
                     help="pass the text as a string: ParameterValue(..., value_type=str) in Python, "
-                         "type=\"str\" in XML; or quote it inside the value (\"'map: odom'\")",
+                         "type=\"str\" in XML, type: str in YAML; or quote it inside the value (\"'map: odom'\")",
                     key=f"{node.fqn}:{prm.name}")
 
 
@@ -310,10 +310,12 @@ def _printed_description(ctx: CheckContext, node: NodeInstance, prm: ResolvedPar
     error = ("ValueError \"Failed to convert '...' using yaml rules: yaml.safe_load() failed\""
              if prm.wrapped or markup else
              f'TypeError "Unable to parse the value of parameter {prm.name} as yaml"')
-    how = "given without type=\"str\"" if markup else \
+    how = ("given without type=\"str\"" if (prm.span.file or "").endswith(".xml") else "given without type: str") \
+        if markup else \
         "given as ParameterValue without value_type=str" if prm.wrapped else \
         "not wrapped in ParameterValue(..., value_type=str)"
-    instead = ('add type="str" to the param: the description is then passed as it is' if markup else
+    instead = (('add type="str" to the <param>' if (prm.span.file or "").endswith(".xml") else
+                'add "type: str" to the param') + ": the description is then passed as it is" if markup else
                "add value_type=str: " if prm.wrapped else "wrap the command: ")
     return Diagnostic(
         "P113", prm.span,

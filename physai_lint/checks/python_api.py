@@ -229,8 +229,9 @@ def _wrong_type_text(f: TypeFact) -> tuple[str, str]:
     if f.kind == "period":
         message = (f"{f.call} is given the {f.type} {f.value}, where launch accepts only a float, a string or "
                    f"substitutions; building the launch description fails with \"TypeError: "
-                   f"'{f.call.split('(')[0]}' expected 'period' to be one of [str, Substitution, Iterable, float], "
-                   f"but got '{f.value}' of type {f.type}\"")
+                   f"'TimerAction' expected 'period' to be one of [<class 'str'>, <class "
+                   f"'launch.substitution.Substitution'>, <class 'collections.abc.Iterable'>, <class 'float'>], "
+                   f"but got '{f.value}' of type '<class '{f.type}'>'\"")
         return message, (f"write it as a float: period={f.value}.0" if f.type == "int"
                          else "write the number of seconds as a float, e.g. period=3.0")
     if f.kind == "event":

@@ -103,6 +103,10 @@ class Plan:
     # an include outside the workspace): they may start processes the plan does not show
     unknown: list[tuple[Span, str]] = field(default_factory=list)
 
+    def never_order(self) -> list[str]:
+        """The vertices that never start (they are in no stage), in plan order."""
+        return sorted(self.never_starts, key=lambda v: vertex_key(self.vertices[v]))
+
     @property
     def labels(self) -> dict[str, str]:
         return {v.id: v.label for v in self.vertices.values()}
@@ -340,7 +344,8 @@ def _skeleton(launch: LaunchResult, effective_params: Callable[[NodeInstance], d
     off = {n.id for n in launch.nodes if n.active is False} - ids
     dead = [PlanEdge(se.before, se.after, se.reason, False, se.delay, se.span) for se in launch.edges
             if se.before in off and se.after in ids and not se.soft and se.reason in HANDLER_REASONS]
-    startable = _startable(ids | off, hard + dead, {**dict.fromkeys(off, False), **{n.id: n.active for n in nodes}},
+    startable = _startable(ids | off, hard + dead, {**dict.fromkeys(off, False), **{n.id: n.active for n in nodes},
+                                                    **dict.fromkeys(launch.unstartable, False)},
                            frozenset(span for span, _ in launch.never_started))
     startable &= ids
     plan.never_starts = ids - startable
@@ -428,8 +433,7 @@ def build_plan(launch: LaunchResult, graph: SystemGraph | None,
             v = plan.vertices[m]
             plan.vertices[m] = PlanVertex(v.id, v.label, v.fqn, v.kind, v.package, v.executable,
                                           v.file, v.line, v.active, v.delay, i)
-    never = sorted(plan.never_starts, key=lambda m: vertex_key(plan.vertices[m]))
-    order = {m: i for i, m in enumerate(m for s in [*plan.stages, never] for m in s)}
+    order = {m: i for i, m in enumerate(m for s in [*plan.stages, plan.never_order()] for m in s)}
     plan.edges = sorted(hard + soft, key=lambda e: (e.soft, order[e.after], order[e.before], e.reason))
 
     # ---- critical path (hard edges, timer delays) --------------------------------------------------

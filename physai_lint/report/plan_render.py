@@ -27,12 +27,7 @@ import json
 import os
 from typing import Any
 
-from physai_lint.graph.plan import Plan, PlanEdge, PlanVertex, vertex_key
-
-
-def _never(plan: Plan) -> list[str]:
-    """The vertices that never start (no stage), in plan order."""
-    return sorted(plan.never_starts, key=lambda v: vertex_key(plan.vertices[v]))
+from physai_lint.graph.plan import Plan, PlanEdge, PlanVertex
 
 FORMATS = ("text", "json", "dot", "mermaid")
 
@@ -150,7 +145,7 @@ def _text(plan: Plan, cwd: str) -> str:
     n_hard = sum(1 for e in plan.edges if not e.soft)
     n_soft = len(plan.edges) - n_hard
     console.print(f"Startup plan: {_rel(plan.entry, cwd)}")
-    never = _never(plan)
+    never = plan.never_order()
     n = len(plan.vertices) - len(never)
     console.print(f"{n} process{'' if n == 1 else 'es'} in {len(plan.stages)} stage(s)"
                   + (f", {len(never)} that never start{'s' if len(never) == 1 else ''}" if never else "")
@@ -198,7 +193,7 @@ def _text(plan: Plan, cwd: str) -> str:
 # ---- json ------------------------------------------------------------------------------------------
 def _json(plan: Plan, cwd: str) -> dict[str, Any]:
     labels = plan.labels
-    verts = [plan.vertices[v] for s in [*plan.stages, _never(plan)] for v in s]
+    verts = [plan.vertices[v] for s in [*plan.stages, plan.never_order()] for v in s]
     return {
         "version": 1,
         "entry": _rel(plan.entry, cwd),
@@ -239,7 +234,7 @@ def _edge_label(e: PlanEdge) -> str:
 def _dot(plan: Plan) -> str:
     out = ["digraph startup {", "  rankdir=LR;", "  node [shape=box, fontname=\"Helvetica\"];",
            "  edge [fontname=\"Helvetica\", fontsize=10];"]
-    never = _never(plan)
+    never = plan.never_order()
     for i, stage in enumerate([*plan.stages, never] if never else plan.stages, 1):
         out.append(f"  subgraph cluster_stage_{i} {{" if stage is not never else "  subgraph cluster_never {")
         out.append(f"    label={_q(f'stage {i}' if stage is not never else 'never starts')};")
@@ -268,16 +263,9 @@ def _m(s: str) -> str:
     return '"' + s.replace('"', "#quot;") + '"'
 
 
-def order_key(plan: Plan, vid: str) -> tuple[int, int]:
-    for i, stage in enumerate(plan.stages):
-        if vid in stage:
-            return i, stage.index(vid)
-    return len(plan.stages), 0
-
-
 def _mermaid(plan: Plan) -> str:
     out = ["flowchart LR"]
-    never = _never(plan)
+    never = plan.never_order()
     for i, stage in enumerate([*plan.stages, never] if never else plan.stages, 1):
         out.append(f"  subgraph stage{i}[{_m(f'stage {i}')}]" if stage is not never else
                    f"  subgraph never[{_m('never starts')}]")
@@ -299,5 +287,5 @@ def _mermaid(plan: Plan) -> str:
         out.append(f"  linkStyle {','.join(red)} stroke:#d00,stroke-width:2px")
     if plan.never_starts:
         out.append("  classDef never stroke:#d00,stroke-dasharray:4 3,color:#d00")
-        out.append("  class " + ",".join(sorted(plan.never_starts, key=lambda v: order_key(plan, v))) + " never")
+        out.append("  class " + ",".join(plan.never_order()) + " never")
     return "\n".join(out) + "\n"

@@ -228,6 +228,9 @@ class LaunchResult:
     # (the first run's node id, the later run's, the span of the event handler or timer that
     # runs it again, or None when the description lists it twice)
     repeated: list[tuple[str, str, Span | None]] = field(default_factory=list)
+    # Nodes an event handler starts whose target action is never added to the description: the
+    # handler never fires (there is no start edge to show it); their ids
+    unstartable: list[str] = field(default_factory=list)
     # Packages referenced by FindPackageShare/$(find-pkg-share)/get_package_share_directory/...:
     # (name, span, file, whether the name came from a launch configuration, e.g. $(var model)_description)
     # (name, where, file, whether a launch configuration gave it: its name when it alone did)

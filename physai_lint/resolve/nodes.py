@@ -405,11 +405,7 @@ class NodeBuilder:
             spans={k: s for k, s in a.field_spans}, package_from_config=package_from_config, anon=anon,
         )
         self._register(inst_, inst_.action_id)
-        if fr.active is not False:
-            first = self.inst.executed.setdefault((fr.load, inst_.action_id), node_id)
-            if first != node_id:
-                again = fr.ran_by if fr.deferred not in (None, "timer") else None
-                self.inst.result.repeated.append((first, node_id, again))
+        self._note_run(inst_)
         for value in a.other:
             self.inst.ev.eval(value, scope)
         for cn in a.composable_nodes:
@@ -535,6 +531,17 @@ class NodeBuilder:
             arguments=cmd[1:], in_timer=fr.deferred == "timer",
         )
         self._register(inst_, inst_.action_id)
+        self._note_run(inst_)
+
+    def _note_run(self, inst_: NodeInstance) -> None:
+        """``LaunchResult.repeated``: a process action object run again in the same load of its
+        file (``ExecuteLocal.execute`` raises "executed more than once")."""
+        fr = self.inst.frame
+        if fr.active is not False:
+            first = self.inst.executed.setdefault((fr.load, inst_.action_id), inst_.id)
+            if first != inst_.id:
+                again = fr.ran_by if fr.deferred not in (None, "timer") else None
+                self.inst.result.repeated.append((first, inst_.id, again))
 
     def _ros2_run_remaps(self, cmd: tuple[str | None, ...], a: ir.ExecuteProcess) -> list[EffRemap]:
         """The remap rules of ``ros2 run <package> <executable> [args]``: the arguments after the
@@ -554,10 +561,13 @@ class NodeBuilder:
 
     def finish(self) -> None:
         res = self.inst.result
-        for key, after, reason, span, delay in self.pending:
-            for before in self.by_action.get(key, []):
-                res.edges.append(StartEdge(before, after, reason, span, delay))
         opaque_files = {s.file for s, _ in res.opaque}
+        for key, after, reason, span, delay in self.pending:
+            befores = self.by_action.get(key, [])
+            for before in befores:
+                res.edges.append(StartEdge(before, after, reason, span, delay))
+            if not befores and self.inst.visited.get(key, "never") == "never" and span.file not in opaque_files:
+                res.unstartable.append(after)  # its handler's target never runs: no edge to wait on
         for h, key, file in self.watched:
             assert key is not None
             seen = self.inst.visited.get(key, "never")

@@ -50,8 +50,8 @@ def keyword_tables(distro: str) -> dict[str, frozenset[str]]:
         a + "OpaqueFunction": _ACTION | {"function", "args", "kwargs"},
         a + "SetLaunchConfiguration": _ACTION | {"name", "value"},
         a + "SetEnvironmentVariable": _ACTION | {"name", "value"},
-        # keyword-only; what they do not name goes through **kwargs to EventHandler(matcher,
-        # entities, handle_once), which takes nothing else (launch event_handlers/*.py)
+        # keyword-only; what they do not name goes through **kwargs to BaseEventHandler(matcher,
+        # handle_once), which takes nothing else (launch event_handlers/*.py, event_handler.py)
         h + "OnProcessExit": _HANDLER | {"target_action", "on_exit"},
         h + "OnProcessStart": _HANDLER | {"target_action", "on_start"},
         h + "OnExecutionComplete": _HANDLER | {"target_action", "on_completion"},

@@ -115,6 +115,12 @@ def line_ref(span: Span, here: Span) -> str:
     return f"line {span.line}" if span.file == here.file else f"{relpath(span.file)}:{span.line}"
 
 
+# A relative path launch opens (a parameter file, an included file): workspace.index.locate
+# reports it missing, whatever directory the linter runs in
+RELATIVE_PATH = ("is relative: launch opens it from the directory `ros2 launch` is started in, not from "
+                 "the package or the launch file")
+
+
 def relpath(path: str | None) -> str:
     """A path for messages, relative to the working directory when possible."""
     if not path:

@@ -3,8 +3,8 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
+from physai_lint.checks._util import RELATIVE_PATH, suggestion
 from physai_lint.checks._util import relpath as _rel
-from physai_lint.checks._util import suggestion
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic
 
@@ -18,8 +18,7 @@ def include_missing(ctx: CheckContext) -> Iterator[Diagnostic]:
                 continue
             seen.add(inc.span)
             if inc.status == "missing" and not (inc.target or "/").startswith("/"):
-                msg = (f'included launch file "{inc.target}" is relative: launch opens it from the directory '
-                       "`ros2 launch` is started in, not from the package or this file")
+                msg = f'included launch file "{inc.target}" {RELATIVE_PATH}'
                 fix = "give the installed path: PathJoinSubstitution([FindPackageShare('<package>'), 'launch', " \
                       "'x.launch.py']) / $(find-pkg-share <package>)/launch/x.launch.xml, or ThisLaunchFileDir()"
             elif inc.status == "missing":

@@ -262,20 +262,21 @@ def invalid_node_name(ctx: CheckContext) -> Iterator[Diagnostic]:
 @rule("N103", "invalid-namespace")
 def invalid_namespace(ctx: CheckContext) -> Iterator[Diagnostic]:
     seen: set[object] = set()
+    bad_pushes: set[str] = set()
     for launch in ctx.launches:
         for span, raw, result in launch.pushed_namespaces:
-            if result is None or span in seen:
+            if result is None:
                 continue
             reason = names.validate_namespace(result) or _passed_problem(result, "__ns")
             if reason:
+                bad_pushes.add(result)
+            if reason and span not in seen:
                 seen.add(span)
                 yield Diagnostic(
                     "N103", span,
                     f'pushed namespace "{raw}" gives "{result}", which is invalid: {reason}',
                     help='namespaces use letters, digits, "_" and "/", and no token starts with a digit',
                     key=result)
-    bad_pushes = {result for launch in ctx.launches for _, _, result in launch.pushed_namespaces
-                  if result and (names.validate_namespace(result) or names.rule_lex_problem(result))}
     for _, node in all_nodes(ctx):
         if node.namespace is None or node.kind == "process":
             continue

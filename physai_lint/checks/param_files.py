@@ -6,7 +6,7 @@ import os
 from collections.abc import Iterator
 from typing import Any
 
-from physai_lint.checks._util import all_nodes, switched_off_by, where
+from physai_lint.checks._util import RELATIVE_PATH, all_nodes, switched_off_by, where
 from physai_lint.checks._util import relpath as _rel
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.interfaces.naming import name_note
@@ -15,8 +15,7 @@ from physai_lint.params.typing import yaml_syntax_error
 from physai_lint.resolve.model import ResolvedParamFile
 from physai_lint.resolve.names import name_rejected
 
-RELATIVE = ("is relative: launch opens it from the directory `ros2 launch` is started in, not from the "
-            "package or the launch file, so it is missing wherever else the launch is started")
+RELATIVE = f"{RELATIVE_PATH}, so it is missing wherever else the launch is started"
 
 
 @rule("P101", "parameter-file-missing")

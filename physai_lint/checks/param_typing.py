@@ -274,9 +274,19 @@ def invalid_parameter_value(ctx: CheckContext) -> Iterator[Diagnostic]:
                     key=f"{node.fqn}:{prm.name}")
 
 
-def _wrap_help(name: str, instead: str, wrapped: bool) -> str:
-    return (f"{instead}{{'{name}': ParameterValue(Command([...]), value_type=str)}}" +
-            ("" if wrapped else " (from launch_ros.parameter_descriptions import ParameterValue)"))
+def _description_fix(prm: ResolvedParam) -> tuple[str, str]:
+    """(what the value lacks, the help) for a command's output launch reads with YAML rules, in
+    the words of the frontend it is written in."""
+    file = prm.span.file or ""
+    if file.endswith(".xml"):
+        return 'given without type="str"', 'add type="str" to the <param>: the description is then passed as it is'
+    if file.endswith((".yaml", ".yml")):
+        return "given without type: str", 'add "type: str" to the param: the description is then passed as it is'
+    wrap = f"{{'{prm.name}': ParameterValue(Command([...]), value_type=str)}}"
+    if prm.wrapped:
+        return "given as ParameterValue without value_type=str", f"add value_type=str: {wrap}"
+    return ("not wrapped in ParameterValue(..., value_type=str)",
+            f"wrap the command: {wrap} (from launch_ros.parameter_descriptions import ParameterValue)")
 
 
 def _printed_description(ctx: CheckContext, node: NodeInstance, prm: ResolvedParam) -> Diagnostic | None:
@@ -306,23 +316,16 @@ def _printed_description(ctx: CheckContext, node: NodeInstance, prm: ResolvedPar
     name = broken.path.rsplit("/", 1)[-1]
     fails = "passes a description cut there, or fails evaluating it" if "comment" in broken.what \
         else "fails evaluating it"
-    markup = (prm.span.file or "").endswith((".xml", ".yaml", ".yml"))
     error = ("ValueError \"Failed to convert '...' using yaml rules: yaml.safe_load() failed\""
-             if prm.wrapped or markup else
+             if prm.wrapped or (prm.span.file or "").endswith((".xml", ".yaml", ".yml")) else
              f'TypeError "Unable to parse the value of parameter {prm.name} as yaml"')
-    how = ("given without type=\"str\"" if (prm.span.file or "").endswith(".xml") else "given without type: str") \
-        if markup else \
-        "given as ParameterValue without value_type=str" if prm.wrapped else \
-        "not wrapped in ParameterValue(..., value_type=str)"
-    instead = (('add type="str" to the <param>' if (prm.span.file or "").endswith(".xml") else
-                'add "type: str" to the param') + ": the description is then passed as it is" if markup else
-               "add value_type=str: " if prm.wrapped else "wrap the command: ")
+    how, instead = _description_fix(prm)
     return Diagnostic(
         "P113", prm.span,
         f'parameter "{prm.name}" of {node.fqn or node.executable} is the output of "{program} {name}", '
         f"{how}, which launch reads with YAML rules; "
         f'{program} {kept} line {broken.line} of {name} ("{broken.snippet}"), where '
         f"{broken.what}: launch {fails} ({error})",
-        help=instead if markup else _wrap_help(prm.name, instead, prm.wrapped),
+        help=instead,
         related=(Related(Span.point(broken.path, broken.line), f"the line {program} {kept}"),),
         key=f"{node.fqn}:{prm.name}")

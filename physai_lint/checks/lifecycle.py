@@ -1,6 +1,6 @@
 """Lifecycle managers and containers: S201 lifecycle-node-not-launched, S202 lifecycle-node-unmanaged,
 S203 container-not-launched, S204 controller-type-not-set, S205 extra-argument-not-bool,
-S206 unknown-extra-argument."""
+S206 unknown-extra-argument, S207 lifecycle-event-reaches-nothing."""
 from __future__ import annotations
 
 from collections.abc import Iterator
@@ -108,6 +108,72 @@ def unmanaged(ctx: CheckContext) -> Iterator[Diagnostic]:
                     f"lifecycle node {where(node)} is launched but no lifecycle manager names it; it "
                     "stays unconfigured",
                     help=f'add "{node.name}" to a lifecycle manager\'s node_names', key=node.fqn)
+
+
+@rule("S207", "lifecycle-event-reaches-nothing")
+def event_reaches_nothing(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for launch in ctx.launches:
+        if not launch.change_matchers:
+            continue
+        lifecycle = [n for n in launch.nodes if n.kind == "lifecycle_node"]
+        names_known = not launch.opaque and all(n.fqn is not None for n in lifecycle)
+        for how, value, span in launch.change_matchers:
+            if span in seen:
+                continue
+            if how == "action":
+                d = _action_matcher(launch, value, span)
+            elif names_known:
+                d = _name_matcher(launch, lifecycle, value, span)
+            else:
+                continue  # a lifecycle node whose name is not known may be the one named
+            if d is not None:
+                seen.add(span)
+                yield d
+
+
+def _action_matcher(launch: LaunchResult, target: str, span: Any) -> Diagnostic | None:
+    """``matches_action(x)`` where ``x`` is a process action that is not a ``LifecycleNode``: only
+    ``LifecycleNode.execute`` registers a handler for ChangeState events."""
+    nodes = [n for n in launch.nodes if n.action_id == target]
+    if not nodes or any(n.kind in ("lifecycle_node", "composable_node") for n in nodes):
+        return None
+    node = nodes[0]
+    what = {"node": "a Node", "container": "a ComposableNodeContainer", "process": "an ExecuteProcess"}.get(
+        node.kind, f"a {node.kind}")
+    return Diagnostic(
+        "S207", span,
+        f"ChangeState is aimed with matches_action() at {what} action ({where(node)}), not a "
+        "LifecycleNode: only LifecycleNode actions receive lifecycle transitions, so this one "
+        "reaches no node and the node is never configured or activated by it",
+        help="launch the node with launch_ros.actions.LifecycleNode (its executable must create a "
+             "lifecycle node), or remove the ChangeState",
+        related=(Related(node.span, "the action it matches"),), key=target)
+
+
+def _name_matcher(launch: LaunchResult, lifecycle: list[NodeInstance], name: str, span: Any) -> Diagnostic | None:
+    """``matches_node_name('...')``: launch_ros compares ``'/' + name`` (or the name as given when
+    it starts with ``/``) with each LifecycleNode's full name; a namespace is not added."""
+    full = name if name.startswith("/") else f"/{name}"
+    if any(n.fqn == full for n in lifecycle):
+        return None
+    plain = next((n for n in launch.nodes if n.fqn == full and n.kind != "lifecycle_node"), None)
+    hint = ""
+    if plain is not None:
+        why = f"{full} is a {plain.kind.replace('_', ' ')} action, not a LifecycleNode"
+    else:
+        fqns = sorted({n.fqn for n in lifecycle if n.fqn})
+        base = full.rsplit("/", 1)[-1]
+        close = [f for f in fqns if f.rsplit("/", 1)[-1] == base][:3] or did_you_mean(full, fqns)
+        hint = ("; did you mean " + " or ".join(f'"{c}"' for c in close) + "?") if close else ""
+        why = "no LifecycleNode of this launch has that name"
+    return Diagnostic(
+        "S207", span,
+        f"ChangeState's matches_node_name({name!r}) compares with the full name \"{full}\" (the "
+        f"namespace is not added), and {why}: the transition reaches no node{hint}",
+        help="give matches_node_name the node's full name with its namespace, or match the action "
+             "itself with matches_action(<the LifecycleNode>)",
+        related=(Related(plain.span, "the node with that name"),) if plain is not None else (), key=full)
 
 
 # Executables of released packages that make plain nodes (never a lifecycle node a manager could

@@ -267,8 +267,13 @@ class EventHandler(ActionBase):
 
 @dataclass(frozen=True, slots=True)
 class EmitEvent(ActionBase):
+    """``EmitEvent(event=...)``. For a lifecycle ``ChangeState``: ``target_id`` is the action
+    ``matches_action(x)`` names, ``target_name`` the literal name ``matches_node_name('...')``
+    compares with, and ``matcher_span`` where the matcher is written."""
     event: str
     target_id: str | None = None
+    target_name: str | None = None
+    matcher_span: Span | None = None
 
 
 @dataclass(frozen=True, slots=True)

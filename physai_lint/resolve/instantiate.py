@@ -342,6 +342,9 @@ class Instantiator:
                 self.result.lifecycle_changes.append((target, a.span))
                 if target is not None:
                     self.change_requests.setdefault(target, []).append((f"{self.frame.file}#{a.id}", a.span))
+                if a.matcher_span is not None and (target or a.target_name):
+                    self.result.change_matchers.append(
+                        ("action", target, a.matcher_span) if target else ("name", a.target_name, a.matcher_span))
         elif isinstance(a, (ir.Log, ir.Shutdown)):
             for val in (getattr(a, "message", None), getattr(a, "reason", None)):
                 self.ev.eval(val, scope)

@@ -244,6 +244,10 @@ class LaunchResult:
     # Lifecycle transitions the launch itself requests (EmitEvent(ChangeState(...))): the target
     # node's action id ("<file>#<action id>"), None when the matcher may name any node
     lifecycle_changes: list[tuple[str | None, Span]] = field(default_factory=list)
+    # The matchers of those transitions the linter can follow: ("action", the matched action's id,
+    # where the matcher is written) for matches_action(x), ("name", the name compared with, where)
+    # for matches_node_name('...')
+    change_matchers: list[tuple[str, str, Span]] = field(default_factory=list)
     # Opaque parts whose effects are unknown: (span, reason)
     opaque: list[tuple[Span, str]] = field(default_factory=list)
     # The parts of ``opaque`` disabled by a condition false for this run's arguments: they start

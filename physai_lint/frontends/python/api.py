@@ -55,6 +55,8 @@ KNOWN |= {
     "launch.utilities.perform_substitutions",
     "launch_ros.events.matches_action",
     "launch.events.matches_action",
+    # launch_ros.events.matchers / .lifecycle(.lifecycle_node_matchers) re-export it
+    "launch_ros.events.matches_node_name",
     # launch_testing's marker that the processes are up and the tests may start: it starts nothing
     "launch_testing.actions.ReadyToTest",
 }

@@ -505,11 +505,16 @@ class ActionBuilder:
             self.ev.wrong_type("event", "EmitEvent(event=...)", e, o.arg_span(-1, "event"))
         if not isinstance(e, LObj):
             return L.EmitEvent(i, s, cond, "unknown")
-        target_id = None
+        target_id = target_name = matcher_span = None
         matcher = e.kwargs.get("lifecycle_node_matcher")
-        if isinstance(matcher, LObj) and matcher.args and isinstance(matcher.args[0], LObj):
-            target_id = self.id_of(matcher.args[0])
-        return L.EmitEvent(i, s, cond, e.qual, target_id)
+        if isinstance(matcher, LObj):
+            matcher_span = matcher.span
+            if api.short(matcher.qual) == "matches_node_name":
+                name = matcher.arg(0, "node_name")
+                target_name = name if isinstance(name, str) else None
+            elif isinstance(action := matcher.arg(0, "target_action"), LObj):
+                target_id = self.id_of(action)
+        return L.EmitEvent(i, s, cond, e.qual, target_id, target_name, matcher_span)
 
 
 def _distinct(values: tuple[Any, ...]) -> tuple[Any, ...]:

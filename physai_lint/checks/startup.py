@@ -1,12 +1,12 @@
 """Startup order: S101 startup-cycle, S102 handler-never-fires, S103 invalid-timer-period,
-S104 process-run-twice."""
+S104 process-run-twice, S105 process-started-at-shutdown."""
 from __future__ import annotations
 
 import math
 from collections.abc import Iterator
 
 from physai_lint.checks._params import effective
-from physai_lint.checks._util import once
+from physai_lint.checks._util import command_words, once
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic, Related
 from physai_lint.resolve.nodes import EVENT_VERB, never_fires_help
@@ -118,6 +118,37 @@ def process_run_twice(ctx: CheckContext) -> Iterator[Diagnostic]:
                      "returns a new Node(...) each time it is called)",
                 related=(Related(a.span, "the action"),) if span != a.span else (),
                 key=f"{a.action_id}")
+
+
+@rule("S105", "process-started-at-shutdown")
+def process_started_at_shutdown(ctx: CheckContext) -> Iterator[Diagnostic]:
+    seen: set[object] = set()
+    for launch in ctx.launches:
+        if not launch.at_shutdown:
+            continue
+        nodes = {n.id: n for n in launch.nodes}
+        for node_id, handler in launch.at_shutdown:
+            node = nodes.get(node_id)
+            if node is None or node.active is False or node.span in seen:
+                continue
+            seen.add(node.span)
+            what = node.executable or "process"
+            words = command_words(node) if node.kind == "process" else None
+            label = f'"{node.fqn}" ({node.package}/{what})' if node.fqn and node.package \
+                else f'"{node.package}/{what}"' if node.package \
+                else f'"{" ".join(w or "<unknown>" for w in words)}"' if words else f'"{what}"'
+            yield Diagnostic(
+                "S105", handler or node.span,
+                f"the {_KIND.get(node.kind, 'ExecuteProcess')} action {label} is started by an OnShutdown "
+                "handler: when the launch ends on Ctrl-C (SIGINT) or because its processes have all "
+                "exited, launch marks itself as shutting down before the handlers run, and "
+                "ExecuteLocal.execute starts nothing then; it runs only when the launch file emits "
+                "Shutdown itself",
+                help="do the work before shutdown (an OnProcessExit of the process whose end should "
+                     "trigger it, or the node's own shutdown callback), or end the launch with the "
+                     "Shutdown action / EmitEvent(event=Shutdown()) instead of Ctrl-C",
+                related=(Related(node.span, "the action"),) if handler is not None and handler != node.span else (),
+                key=node.action_id)
 
 
 _KIND = {"node": "Node", "lifecycle_node": "LifecycleNode", "container": "ComposableNodeContainer"}

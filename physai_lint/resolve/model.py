@@ -228,6 +228,10 @@ class LaunchResult:
     # (the first run's node id, the later run's, the span of the event handler or timer that
     # runs it again, or None when the description lists it twice)
     repeated: list[tuple[str, str, Span | None]] = field(default_factory=list)
+    # Processes an OnShutdown handler starts: (node id, where the handler's actions are given).
+    # launch marks itself shut down before those handlers run when it ends on Ctrl-C or idle, and
+    # ExecuteLocal.execute then starts nothing
+    at_shutdown: list[tuple[str, Span | None]] = field(default_factory=list)
     # Nodes an event handler starts whose target action is never added to the description: the
     # handler never fires (there is no start edge to show it); their ids
     unstartable: list[str] = field(default_factory=list)

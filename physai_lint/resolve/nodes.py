@@ -535,8 +535,11 @@ class NodeBuilder:
 
     def _note_run(self, inst_: NodeInstance) -> None:
         """``LaunchResult.repeated``: a process action object run again in the same load of its
-        file (``ExecuteLocal.execute`` raises "executed more than once")."""
+        file (``ExecuteLocal.execute`` raises "executed more than once"); ``at_shutdown``: one an
+        OnShutdown handler runs."""
         fr = self.inst.frame
+        if fr.active is not False and fr.deferred == "on_shutdown":
+            self.inst.result.at_shutdown.append((inst_.id, fr.ran_by))
         if fr.active is not False:
             first = self.inst.executed.setdefault((fr.load, inst_.action_id), inst_.id)
             if first != inst_.id:

@@ -3,6 +3,7 @@ one translator so that ``*`` never crosses a ``/`` and ``**`` spans directories.
 from __future__ import annotations
 
 import re
+from collections.abc import Collection
 from functools import lru_cache
 
 
@@ -65,7 +66,7 @@ def has_magic(pat: str) -> bool:
     return any(ch in pat for ch in "*?[")
 
 
-def glob_files(pattern: str, files: frozenset[str] | set[str], recursive: bool = False) -> list[str]:
+def glob_files(pattern: str, files: Collection[str], recursive: bool = False) -> list[str]:
     """Evaluate a Python ``glob.glob(pattern)`` (relative to a package dir) against a snapshot of
     the package's files (relative ``/`` paths). Like ``glob``, ``*`` does not match a leading dot
     unless the pattern segment starts with one. Returns sorted matches (files only)."""

@@ -9,7 +9,7 @@ import hashlib
 import os
 import posixpath
 import re
-from collections.abc import Iterable, Iterator, Mapping
+from collections.abc import Collection, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 from typing import Any, Literal
 
@@ -53,12 +53,14 @@ class WorkspacePackage:
     install_rules: tuple[InstallRule, ...]
     parameter_yamls: dict[str, tuple[str, ...]]
     parameter_modules: tuple[tuple[str, str], ...]
-    files: frozenset[str]  # relative "/" paths of the files in the package (snapshot at build)
+    # relative "/" paths of the files in the package (``PackageTree.files``; a frozenset for a
+    # package built by hand)
+    files: Collection[str]
     install_complete: bool = True
     executables_complete: bool = True
     registers_in_index: bool = True
     valid: bool = True  # False when catkin_pkg rejected package.xml
-    dirs: frozenset[str] = field(default_factory=frozenset)
+    dirs: Collection[str] = field(default_factory=frozenset)
     sources: dict[str, tuple[str, ...]] = field(default_factory=dict)  # executable -> sources
     # executable -> those of its sources a linked library brings; -> classes known to run in it
     library_sources: dict[str, tuple[str, ...]] = field(default_factory=dict)
@@ -650,6 +652,9 @@ def _find_packages(root: str, ignored: list[tuple[str, str]] | None = None) -> l
     return found
 
 
+_SKIPPED_DIRS = (".git", "__pycache__", ".svn", ".hg")
+
+
 def _snapshot(pkg_dir: str) -> tuple[frozenset[str], frozenset[str]]:
     files: set[str] = set()
     dirs: set[str] = set()
@@ -669,7 +674,7 @@ def _snapshot(pkg_dir: str) -> tuple[frozenset[str], frozenset[str]]:
             r = rel + e.name if not rel else rel + "/" + e.name
             try:
                 if e.is_dir():
-                    if e.name in (".git", "__pycache__", ".svn", ".hg"):
+                    if e.name in _SKIPPED_DIRS:
                         continue
                     dirs.add(r)
                     stack.append((r, d + "/" + e.name))
@@ -678,6 +683,90 @@ def _snapshot(pkg_dir: str) -> tuple[frozenset[str], frozenset[str]]:
             except OSError:
                 continue
     return frozenset(files), frozenset(dirs)
+
+
+class PackageTree:
+    """The files and directories under a package directory, read on demand.
+
+    Most packages a run reads are asked about a few paths (is ``launch/x.launch.py`` there?); a
+    whole listing of their trees was 8% of a run on Autoware's top-level launch file (202 packages,
+    source trees included). A membership question is answered by one ``stat`` of that path
+    (remembered), the same answer as the listing's except that a listing stops at
+    ``SNAPSHOT_LIMIT`` files and lists a file reached twice through a directory link once. Iterating
+    (globs of setup.py ``data_files``, directories installed into ``lib/<pkg>``) lists the tree
+    once (``_snapshot``). ``files`` and ``dirs`` are the two views."""
+
+    __slots__ = ("root", "_stats", "_listing", "files", "dirs")
+
+    def __init__(self, root: str) -> None:
+        self.root = root
+        self._stats: dict[str, str | None] = {}  # rel path -> "file" / "dir" / None
+        self._listing: tuple[frozenset[str], frozenset[str]] | None = None
+        self.files = _TreeView(self, "file")
+        self.dirs = _TreeView(self, "dir")
+
+    def listing(self) -> tuple[frozenset[str], frozenset[str]]:
+        if self._listing is None:
+            self._listing = _snapshot(self.root)
+        return self._listing
+
+    def kind(self, rel: str) -> str | None:
+        """"file", "dir" or None for ``rel`` (a relative "/" path) as the listing would see it: a
+        path through a skipped directory (.git, __pycache__, ...) is not in the package."""
+        if rel in self._stats:
+            return self._stats[rel]
+        if self._listing is not None:
+            files, dirs = self._listing
+            found = "file" if rel in files else "dir" if rel in dirs else None
+        else:
+            parts = rel.split("/")
+            if any(p in ("", ".", "..") for p in parts) or any(p in _SKIPPED_DIRS for p in parts[:-1]):
+                found = None
+            else:
+                try:
+                    st = os.stat(self.root + "/" + rel)
+                except (OSError, ValueError):
+                    found = None
+                else:
+                    import stat
+
+                    found = "dir" if stat.S_ISDIR(st.st_mode) and parts[-1] not in _SKIPPED_DIRS \
+                        else "file" if stat.S_ISREG(st.st_mode) else None
+        self._stats[rel] = found
+        return found
+
+
+class _TreeView:
+    """``PackageTree.files`` or ``.dirs``: a read-only set of relative "/" paths."""
+
+    __slots__ = ("tree", "what")
+
+    def __init__(self, tree: PackageTree, what: str) -> None:
+        self.tree = tree
+        self.what = what
+
+    def __contains__(self, rel: object) -> bool:
+        return isinstance(rel, str) and self.tree.kind(rel) == self.what
+
+    def _all(self) -> frozenset[str]:
+        files, dirs = self.tree.listing()
+        return files if self.what == "file" else dirs
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._all())
+
+    def __len__(self) -> int:
+        return len(self._all())
+
+    def __eq__(self, other: object) -> bool:  # as the sets they stand for (lists the tree)
+        if isinstance(other, _TreeView):
+            return self._all() == other._all()
+        return isinstance(other, (set, frozenset)) and self._all() == other
+
+    __hash__ = None  # type: ignore[assignment]  # like a set's
+
+    def __repr__(self) -> str:
+        return f"<{self.what}s under {self.tree.root}>"
 
 
 def build_package_index(workspace_root: str, distro: str = "humble",
@@ -882,7 +971,8 @@ def _read_package(index: PackageIndex, pkg_dir: str) -> WorkspacePackage | None:
     if man is None:
         return None
     name = man.name or posixpath.basename(pkg_dir)
-    files, dirs = _snapshot(pkg_dir)
+    tree = PackageTree(pkg_dir)
+    files, dirs = tree.files, tree.dirs
     build_type = man.build_type
     if build_type is None:
         build_type = ("ament_python" if "setup.py" in files and "CMakeLists.txt" not in files

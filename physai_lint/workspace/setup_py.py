@@ -8,6 +8,7 @@ import ast
 import configparser
 import os
 import posixpath
+from collections.abc import Collection
 
 from physai_lint.pyast import ast_nodes
 
@@ -20,7 +21,7 @@ class _Unknown(Exception):
 
 
 class _Eval:
-    def __init__(self, pkg_dir: str, files: frozenset[str]) -> None:
+    def __init__(self, pkg_dir: str, files: Collection[str]) -> None:
         self.pkg_dir = pkg_dir
         self.files = files
         self.env: dict[str, object] = {}
@@ -250,7 +251,7 @@ def _script_dirs(pkg_dir: str) -> list[str]:
             if cp.has_option(section, key)]
 
 
-def read_setup_py(pkg_dir: str, pkg_name: str, files: frozenset[str], text: str | None) -> BuildInfo:
+def read_setup_py(pkg_dir: str, pkg_name: str, files: Collection[str], text: str | None) -> BuildInfo:
     info = BuildInfo()
     path = pkg_dir + "/setup.py"
     if text is None:

@@ -56,12 +56,15 @@ def _syntax_error(path: str, text: str, err: BaseException) -> FrontendResult:
 
 
 def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | None] | None = None,
-                        distro: str | None = None, known: dict[Any, str] | None = None) -> FrontendResult:
+                        distro: str | None = None, known: dict[Any, str] | None = None,
+                        facts: bool = True) -> FrontendResult:
     """Parse and statically evaluate a ``.launch.py`` file into the launch IR.
 
     ``distro`` is what ``os.environ['ROS_DISTRO']``/``os.getenv('ROS_DISTRO')`` read; without it
     they are unknown like every other environment variable. ``known``: what substitutions the
-    OpaqueFunctions perform give (``specialize``); without it they stay symbolic."""
+    OpaqueFunctions perform give (``specialize``); without it they stay symbolic. ``facts=False``
+    leaves out what the rules read of the source itself (``PythonFacts``' calls, undefined names
+    and imports): the same for any ``known``, so a second evaluation needs only the actions."""
     try:
         tree = ast.parse(text, filename=path)
     except (SyntaxError, ValueError, RecursionError, MemoryError) as err:
@@ -120,14 +123,18 @@ def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | N
         else:
             actions = (OpaqueAction("opaque@gld", Span.whole_file(path), None,
                                     f"{entry} does not return a LaunchDescription"),)
-    try:
-        nodes = ast_nodes(tree)
-        dead = ev.dead_lines(nodes)
-        calls = tuple(c for c in call_facts(nodes, spans, ev.kw_kinds) if not _within(c.span, dead))
-        names = tuple(n for n in undefined_names(tree, nodes, spans, text) if not _within(n.span, dead))
-        imports = tuple(i for i in launch_imports(tree, spans) if not _within(i[2], dead))
-    except RecursionError:
-        calls, names, imports = (), (), ()
+    calls: tuple[Any, ...] = ()
+    names: tuple[Any, ...] = ()
+    imports: tuple[Any, ...] = ()
+    if facts:
+        try:
+            nodes = ast_nodes(tree)
+            dead = ev.dead_lines(nodes)
+            calls = tuple(c for c in call_facts(nodes, spans, ev.kw_kinds) if not _within(c.span, dead))
+            names = tuple(n for n in undefined_names(tree, nodes, spans, text) if not _within(n.span, dead))
+            imports = tuple(i for i in launch_imports(tree, spans) if not _within(i[2], dead))
+        except RecursionError:
+            calls, names, imports = (), (), ()
     concats = tuple(sorted(ev.concats.values(), key=lambda c: (c.span.line, c.span.col, c.how)))
     # launch_testing files (`launch_test FILE`) define generate_test_description instead, and
     # launch_pytest modules (run by pytest) give their descriptions through @launch_pytest.fixture.
@@ -198,7 +205,7 @@ def specialize(path: str, text: str, read_file: Callable[[str], str | None] | No
     found again at the same place (the id and the span of the call both match)."""
     if not known:
         return None
-    res = parse_python_launch(path, text, read_file, distro, known=dict(known))
+    res = parse_python_launch(path, text, read_file, distro, known=dict(known), facts=False)
     if res.launch is None:
         return None
     found = _find(res.launch.actions, action.id, 0)

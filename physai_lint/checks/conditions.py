@@ -1,4 +1,4 @@
-"""Conditions that can never hold: L108 condition-never-true.
+"""Conditions that can never hold: L108 condition-never-true; L116 python-expression-error.
 
 Conservative by design: a condition is reported only when every input is known: literals, values
 a ``SetLaunchConfiguration`` / ``<let>`` without a condition surely set before it (walked in
@@ -368,3 +368,21 @@ def condition_never_true(ctx: CheckContext) -> Iterator[Diagnostic]:
                 f"{raw}: {why}; the action is never run",
                 help="fix the compared value or the condition, or remove the action if it is dead code",
                 key=raw)
+
+
+@rule("L116", "python-expression-error")
+def python_expression_error(ctx: CheckContext) -> Iterator[Diagnostic]:
+    from physai_lint.checks._util import once
+
+    for span, text, why in once(ctx, "expression_errors", lambda e: e):
+        name = why.startswith("NameError")
+        yield Diagnostic(
+            "L116", span,
+            f"PythonExpression / $(eval) evaluates {text!r}, which raises {why}; launch stops with "
+            "that error when it performs the substitution",
+            help=("a launch argument's text is pasted into the expression as code: compare it as a "
+                  "quoted string (\"'$(var mode)' == 'mapping'\", PythonExpression([\"'\", mode, \"' == "
+                  "'mapping'\"])), or give the value Python spells (True/False, not true/false)")
+            if name else "fix the expression so that it is valid Python once its substitutions are "
+                         "replaced by their values",
+            key=(text, why))

@@ -14,14 +14,32 @@ from physai_lint.model.values import literal_of
 
 @rule("L109", "invalid-condition-value")
 def invalid_condition_value(ctx: CheckContext) -> Iterator[Diagnostic]:
-    for span, value in once(ctx, "invalid_conditions", lambda e: e):
+    for span, value, how in once(ctx, "invalid_conditions", lambda e: e):
+        if how == "condition":
+            yield Diagnostic(
+                "L109", span,
+                f'condition value "{value}" is not one of "true", "false", "1", "0" (any case); '
+                f'launch fails with InvalidConditionExpressionError',
+                help="pass a boolean string (true/false/1/0), or compare explicitly with "
+                     "LaunchConfigurationEquals / $(equals ...) / PythonExpression",
+                key=value)
+            continue
+        # NotSubstitution & co. type the operand with yaml.safe_load (type_utils.coerce_to_type)
         yield Diagnostic(
             "L109", span,
-            f'condition value "{value}" is not one of "true", "false", "1", "0" (any case); '
-            f'launch fails with InvalidConditionExpressionError',
-            help="pass a boolean string (true/false/1/0), or compare explicitly with "
-                 "LaunchConfigurationEquals / $(equals ...) / PythonExpression",
-            key=value)
+            f'{_BOOL_OP.get(how, how)} gets "{value}", which is not a YAML boolean '
+            f"(true/false, yes/no, on/off); it types its operands with yaml.safe_load, so "
+            f"launch fails with SubstitutionFailure: \"Cannot convert value '{value}' to "
+            f"'<class 'bool'>'\"",
+            help='pass "true" or "false" (IfCondition also takes "1"/"0", the boolean substitutions do '
+                 "not), or compare explicitly with EqualsSubstitution / PythonExpression",
+            key=(how, value))
+
+
+# the substitution classes behind ``BoolOp.op`` (Python name / XML form)
+_BOOL_OP = {"not": "NotSubstitution ($(not))", "and": "AndSubstitution ($(and))",
+            "or": "OrSubstitution ($(or))", "any": "AnySubstitution ($(any))",
+            "all": "AllSubstitution ($(all))"}
 
 
 def _namespace_absolute(node: object) -> bool:

@@ -43,6 +43,18 @@ ReadHook = Callable[[str, Span | None, bool, bool], None]  # name, span, defined
 PackageHook = Callable[[str, Span | None, "bool | str"], None]
 
 
+# What ``yaml.safe_load`` reads as a bool (YAML 1.1, PyYAML's resolver): the boolean substitutions
+# (NotSubstitution, AndSubstitution, $(not) ...) type their operands with
+# ``perform_typed_substitution(context, value, bool)``, which fails on anything else ('0', '1', '')
+_YAML_BOOLS = {**dict.fromkeys(("yes", "Yes", "YES", "true", "True", "TRUE", "on", "On", "ON"), True),
+               **dict.fromkeys(("no", "No", "NO", "false", "False", "FALSE", "off", "Off", "OFF"), False)}
+
+
+def yaml_bool(text: str) -> bool | None:
+    """``coerce_to_type(text, bool)``: True/False, or None when launch raises ValueError."""
+    return _YAML_BOOLS.get(text.strip(" "))
+
+
 def condition_truth(text: str) -> bool | None:
     """``evaluate_condition_expression``: True/False, or None when the text is not a valid value."""
     t = text.strip().lower()
@@ -69,12 +81,16 @@ class Evaluator:
         packages: PackageIndex | None,
         on_read: ReadHook | None = None,
         on_package: PackageHook | None = None,
-        on_bad_condition: Callable[[Span | None, str], None] | None = None,
+        on_bad_condition: Callable[[Span | None, str, str], None] | None = None,
     ) -> None:
         self.packages = packages
         self.on_read = on_read
         self.on_package = on_package
+        # a value a condition or a boolean substitution refuses: (where, the value, "condition" or
+        # the substitution's operator)
         self.on_bad_condition = on_bad_condition
+        # a PythonExpression / $(eval) that raises with the text it gets: (where, text, why)
+        self.on_bad_expression: Callable[[Span | None, str, str], None] | None = None
         self.on_dirname: Callable[[Span | None, Scope], None] | None = None
         # temporary files that substitutions (nav2_common RewrittenYaml ...) write: path -> file
         self.virtual: dict[str, Any] = {}
@@ -225,10 +241,12 @@ class Evaluator:
         expr = self.eval(p.expression, scope)
         if expr is None:
             return None
-        from physai_lint.resolve.safe_eval import SafeEvalUnknown, safe_eval
+        from physai_lint.resolve.safe_eval import SafeEvalError, SafeEvalUnknown, safe_eval
 
         result = safe_eval(expr, p.modules)
         if isinstance(result, SafeEvalUnknown):
+            if isinstance(result, SafeEvalError) and self.on_bad_expression is not None:
+                self.on_bad_expression(p.span, expr, result.reason)
             return None
         return str(result)
 
@@ -236,7 +254,10 @@ class Evaluator:
         vals: list[bool | None] = []
         for operand in p.operands:
             text = self.eval(operand, scope)
-            vals.append(None if text is None else self.truth(text, operand))
+            truth = None if text is None else yaml_bool(text)
+            if text is not None and truth is None and self.on_bad_condition:
+                self.on_bad_condition(p.span or v.span_of(operand), text, p.op)
+            vals.append(truth)
         if p.op == "not":
             return None if vals[0] is None else str(not vals[0]).lower()
         if p.op in ("and", "all"):
@@ -247,18 +268,20 @@ class Evaluator:
             return "true"
         return None if any(x is None for x in vals) else "false"
 
-    def truth(self, text: str, value: v.Value | None) -> bool | None:
+    def truth(self, text: str, value: v.Value | None, span: Span | None = None) -> bool | None:
         result = condition_truth(text)
         if result is None and self.on_bad_condition:
-            self.on_bad_condition(v.span_of(value), text)
+            self.on_bad_condition(span or v.span_of(value), text, "condition")
         return result
 
-    def condition(self, kind: str, value: v.Value, scope: Scope) -> bool | None:
-        """``IfCondition``/``UnlessCondition``: whether the action runs (None: unknown)."""
+    def condition(self, kind: str, value: v.Value, scope: Scope, span: Span | None = None) -> bool | None:
+        """``IfCondition``/``UnlessCondition``: whether the action runs (None: unknown). ``span``:
+        where the condition is written, where a refused value is reported (the value itself may be
+        a LaunchConfiguration made lines before, and used elsewhere too)."""
         text = self.eval(value, scope)
         if text is None:
             return None
-        truth = self.truth(text, value)
+        truth = self.truth(text, value, span)
         if truth is None:
             return None
         return truth if kind == "if" else not truth

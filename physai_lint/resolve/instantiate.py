@@ -109,6 +109,7 @@ class Instantiator:
         self._groups = 0
         self.leaks: dict[int, Leak] = {}  # id(list item) -> a leak waiting for a node after its group
         self.ev = Evaluator(packages, self._on_read, self._on_package, self._on_bad_condition)
+        self.ev.on_bad_expression = self._on_bad_expression
         self.ev.on_dirname = self._on_dirname
         self.nodes = NodeBuilder(self)
         self.visited: dict[str, bool | None] = {}
@@ -164,9 +165,13 @@ class Instantiator:
             own = self.frame.dir or posixpath.dirname(self.frame.file)
             self.result.dirname_traps.append((span, str(got), own))
 
-    def _on_bad_condition(self, span: Span | None, text: str) -> None:
+    def _on_bad_condition(self, span: Span | None, text: str, how: str) -> None:
         if span is not None and self.frame.active is not False:
-            self.result.invalid_conditions.append((span, text))
+            self.result.invalid_conditions.append((span, text, how))
+
+    def _on_bad_expression(self, span: Span | None, text: str, why: str) -> None:
+        if span is not None and self.frame.active is not False:
+            self.result.expression_errors.append((span, text, why))
 
     # ---- entry -------------------------------------------------------------------------------
     def run(self, entry: str, cli_args: dict[str, str]) -> LaunchResult:
@@ -227,7 +232,7 @@ class Instantiator:
         outer = self.frame
         active = outer.active
         if a.condition is not None:
-            active = combine(active, self.ev.condition(a.condition.kind, a.condition.value, scope))
+            active = combine(active, self.ev.condition(a.condition.kind, a.condition.value, scope, a.condition.span))
         # Frames are never mutated: an action that changes nothing keeps its parent's frame (most
         # do; a dataclasses.replace per action was a tenth of resolving a large workspace).
         self.frame = outer if active is outer.active else replace(outer, active=active)
@@ -576,7 +581,7 @@ class Instantiator:
         the node builder points at it): a finished walk is then freed by reference counting
         instead of waiting for the cyclic collector."""
         ev = self.ev
-        ev.on_read = ev.on_package = ev.on_bad_condition = ev.on_dirname = None
+        ev.on_read = ev.on_package = ev.on_bad_condition = ev.on_dirname = ev.on_bad_expression = None
         self.nodes.inst = None  # type: ignore[assignment]
         self.deferred.clear()
         self.handlers.clear()

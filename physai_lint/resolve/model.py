@@ -258,8 +258,11 @@ class LaunchResult:
     # nothing now (the plan leaves them out), though with other arguments they might (the rules,
     # which judge the launch file for every run, still treat them as unknown).
     inactive_opaque: list[tuple[Span, str]] = field(default_factory=list)
-    # Condition values that are not true/false/1/0: (span, value)
-    invalid_conditions: list[tuple[Span, str]] = field(default_factory=list)
+    # Condition values that are not true/false/1/0, and boolean substitution operands that are
+    # not YAML booleans: (span, value, "condition" or the operator: "not", "and", ...)
+    invalid_conditions: list[tuple[Span, str, str]] = field(default_factory=list)
+    # PythonExpression / $(eval) texts that raise when evaluated: (span, text, the error)
+    expression_errors: list[tuple[Span, str, str]] = field(default_factory=list)
     # $(dirname)/ThisLaunchFileDir evaluated after an include: (span, got, the file's own dir)
     dirname_traps: list[tuple[Span, str, str]] = field(default_factory=list)
     # Start delay of nodes started by timers (node id -> seconds, None when unknown)

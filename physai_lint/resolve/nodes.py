@@ -427,7 +427,7 @@ class NodeBuilder:
                 continue
             # evaluated even where launch_ros ignores it: what it reads stays read (no L102 on
             # top of L115), and it is how the file means to be run once the condition is moved
-            cond = self.inst.ev.condition(c.kind, c.value, scope)
+            cond = self.inst.ev.condition(c.kind, c.value, scope, c.span)
             if c is cn.branch or not ignored:
                 active = combine(active, cond)
         package, package_from_config = self.inst.ev.eval_noting_configs(cn.package, scope)

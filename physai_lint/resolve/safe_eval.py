@@ -8,6 +8,7 @@ arbitrary objects, calls of unknown functions, comprehensions, lambdas ...) give
 from __future__ import annotations
 
 import ast
+import builtins
 import functools
 import math
 import operator
@@ -28,8 +29,24 @@ class SafeEvalUnknown:
     reason: str
 
 
+@dataclass(frozen=True, slots=True)
+class SafeEvalError(SafeEvalUnknown):
+    """``eval`` raises on this text, whatever the values of the names it could not know: a
+    SyntaxError, or a NameError (a name that is neither a builtin, nor math's, nor a module's)."""
+
+
 class _Unknown(Exception):
     pass
+
+
+class _NameError(Exception):
+    pass
+
+
+# What ``eval(text, {}, locals)`` finds besides ``locals``: the builtins (``{}`` as globals gets
+# ``__builtins__``)
+_BUILTIN_NAMES = frozenset(dir(builtins))
+_MATH_NAMES = frozenset(dir(math))
 
 
 _BINOPS: dict[type[ast.operator], Callable[[Any, Any], Any]] = {
@@ -168,7 +185,17 @@ class _Interp:
             return names[node.id]
         if self.math_flat and node.id in _MATH_CONSTS:
             return _MATH_CONSTS[node.id]
+        self._defined(node.id)
         raise _Unknown(f"unknown name {node.id!r}")
+
+    def _defined(self, name: str) -> None:
+        """Raise ``_NameError`` when ``eval`` would not find ``name``: not a builtin, not one of
+        math's names (humble evaluates with ``math.__dict__`` as locals; later distros add each
+        module's names when it is math, and each module by its name)."""
+        if name in _BUILTIN_NAMES or (self.math_flat and name in _MATH_NAMES) or \
+                any(name == m.split(".")[0] for m in self.modules):
+            return
+        raise _NameError(f"NameError: name {name!r} is not defined")
 
     def _seq(self, elts: list[ast.expr], d: int) -> list[Any]:
         return [self.run(e, d) for e in elts]
@@ -277,6 +304,7 @@ class _Interp:
                 return _BUILTINS[func.id]
             if self.math_flat and func.id in _MATH_FUNCS:
                 return getattr(math, func.id)  # type: ignore[no-any-return]
+            self._defined(func.id)
             raise _Unknown(f"call of {func.id!r}")
         if isinstance(func, ast.Attribute):
             if isinstance(func.value, ast.Name) and func.value.id == "math":
@@ -341,26 +369,33 @@ def _safe_format(template: str) -> Callable[..., str]:
 
 
 @functools.lru_cache(maxsize=2048)
-def _parse(expr: str) -> ast.Expression | str:
-    """The expression's tree (only read by ``_Interp``), or why it does not parse; once per text:
-    the same conditions are evaluated in every entry that includes their file."""
+def _parse(expr: str) -> ast.Expression | SafeEvalUnknown:
+    """The expression's tree (only read by ``_Interp``), or why it does not parse: a SyntaxError is
+    eval's own (``SafeEvalError``), a parser that runs out of stack or memory here says nothing
+    of what eval would do. Once per text: the same conditions are evaluated in every entry that
+    includes their file."""
     try:
         return ast.parse(expr, mode="eval")
-    except (SyntaxError, ValueError, MemoryError, RecursionError) as err:
-        return str(err)
+    except SyntaxError as err:
+        return SafeEvalError(f"SyntaxError: {err.msg}")
+    except (ValueError, MemoryError, RecursionError) as err:
+        return SafeEvalUnknown(f"not a Python expression: {err}")
 
 
 def safe_eval(expr: str, modules: tuple[str, ...] = ("math",)) -> object | SafeEvalUnknown:
-    """Evaluate ``expr`` like ``PythonExpression`` would, or say why it cannot be known."""
+    """Evaluate ``expr`` like ``PythonExpression`` would, or say why it cannot be known
+    (``SafeEvalError`` when eval would raise)."""
     if len(expr) > MAX_EXPR_CHARS:
         return SafeEvalUnknown("expression too long")
     tree = _parse(expr.strip())
-    if isinstance(tree, str):
-        return SafeEvalUnknown(f"not a Python expression: {tree}")
+    if isinstance(tree, SafeEvalUnknown):
+        return tree
     try:
         return _Interp(modules).run(tree)
     except _Unknown as err:
         return SafeEvalUnknown(str(err))
+    except _NameError as err:
+        return SafeEvalError(str(err))
     except (ArithmeticError, ValueError, TypeError, LookupError, RecursionError,
             MemoryError) as err:
         return SafeEvalUnknown(f"evaluation failed: {type(err).__name__}: {err}")

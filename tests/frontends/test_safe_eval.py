@@ -10,7 +10,7 @@ import math  # noqa: E402
 
 import pytest  # noqa: E402
 
-from physai_lint.resolve.safe_eval import SafeEvalUnknown, safe_eval  # noqa: E402
+from physai_lint.resolve.safe_eval import SafeEvalError, SafeEvalUnknown, safe_eval  # noqa: E402
 
 
 @pytest.mark.parametrize("expr, expected", [
@@ -71,3 +71,44 @@ def test_sets_refused_where_their_order_or_type_shows(expr: str) -> None:
 def test_math_module_needed_for_math_names() -> None:
     assert isinstance(safe_eval("math.pi", modules=()), SafeEvalUnknown)
     assert isinstance(safe_eval("sqrt(4)", modules=("os",)), SafeEvalUnknown)
+
+
+@pytest.mark.parametrize("expr, error", [
+    ("not false", "NameError: name 'false' is not defined"),
+    ("mapping == 'mapping'", "NameError: name 'mapping' is not defined"),
+    ("True and undefined_call(1)", "NameError: name 'undefined_call' is not defined"),
+    ("1 +", "SyntaxError"),
+])
+def test_errors_eval_raises_whatever_the_unknowns(expr: str, error: str) -> None:
+    result = safe_eval(expr)
+    assert isinstance(result, SafeEvalError) and result.reason.startswith(error)
+
+
+@pytest.mark.parametrize("expr", [
+    "False and false",  # short-circuit: never evaluated
+    "True or nope",
+    "sorted([2, 1])",  # a builtin the interpreter does not model: unknown, not an error
+    "floor(2.5) + e",  # math's names (humble's locals)
+    "numpy.pi",  # a module the expression imports (later distros' python_modules)
+])
+def test_what_eval_finds_is_no_error(expr: str) -> None:
+    assert not isinstance(safe_eval(expr, modules=("math", "numpy")), SafeEvalError)
+
+
+def test_math_names_are_unknown_without_math() -> None:
+    assert isinstance(safe_eval("floor(2.5)", modules=("os",)), SafeEvalError)
+
+
+def test_a_parser_out_of_stack_says_nothing_of_eval(monkeypatch: pytest.MonkeyPatch) -> None:
+    import physai_lint.resolve.safe_eval as se
+
+    def deep(*_: object, **__: object) -> None:
+        raise RecursionError("maximum recursion depth exceeded")
+
+    monkeypatch.setattr(se.ast, "parse", deep)
+    se._parse.cache_clear()
+    try:
+        result = safe_eval("1 + 2 + 3")
+    finally:
+        se._parse.cache_clear()
+    assert isinstance(result, SafeEvalUnknown) and not isinstance(result, SafeEvalError)

@@ -158,7 +158,7 @@ def unknown_keyword_argument(ctx: CheckContext) -> Iterator[Diagnostic]:
                     yield Diagnostic(
                         "L001", span,
                         f'{cls}() keyword argument "{kw}" does not exist in {ctx.distro} '
-                        "(it was added in jazzy)",
+                        "(jazzy has it)",
                         help=f'remove "{kw}", or target a newer distro with --distro',
                         key=f"{cls}:{kw}")
                     continue

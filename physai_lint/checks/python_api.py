@@ -52,7 +52,7 @@ def undefined_name(ctx: CheckContext) -> Iterator[Diagnostic]:
             if where:
                 why, fix = f"it is in {where[0]}", f'import it from there: "from {where[0]} import {name}"'
             elif newer:
-                why, fix = (f"it was added in {newer[0]}",
+                why, fix = (f"{newer[0]} has it",
                             f'use what {ctx.distro} has, or target {newer[0]} with --distro')
             else:
                 why, fix = "", "check the name and the distro"
@@ -178,6 +178,22 @@ def wrong_argument_type(ctx: CheckContext) -> Iterator[Diagnostic]:
             yield Diagnostic("L008", f.span, message, help=help_, key=f"{f.call}:{f.value}")
 
 
+def _joined_characters(shown: str) -> str:
+    """What ``os.path.join(*text)`` makes of a string literal shown as ``'text'`` (a "/" among the
+    characters starts the path again), shortened for a message."""
+    import ast
+    import posixpath
+
+    try:
+        text = ast.literal_eval(shown)
+    except (ValueError, SyntaxError):
+        return "one component per character"
+    if not isinstance(text, str) or not text:
+        return "one component per character"
+    joined = posixpath.join(*text)
+    return repr(joined if len(joined) <= 40 else joined[:37] + "...")
+
+
 def _wrong_type_text(f: TypeFact) -> tuple[str, str]:
     """The message and help of an L008 finding."""
     if f.kind == "text":  # a bool, int or float (the frontend records nothing else here)
@@ -193,6 +209,12 @@ def _wrong_type_text(f: TypeFact) -> tuple[str, str]:
         help_ = ("a list inside the list is no substitution: write its parts into the outer list (its "
                  "parts are concatenated)" if f.type in ("list", "tuple") else "write it as a string")
         return message, help_
+    if f.kind == "path-string":
+        message = (f"{f.call} is given the string {f.value}, not a list of components: since "
+                   "ros2/launch#838 (kilted, and humble's updates since mid-2025) each item is a path "
+                   "component, and a string's items are its characters, so it yields "
+                   f"{_joined_characters(f.value)} (older releases kept it whole)")
+        return message, f"pass a list: PathJoinSubstitution([{f.value}]), or split it into its components"
     name = f.call.split("(", 1)[1].split("=", 1)[0]  # the keyword: "Node(shell=...)" -> "shell"
     if f.kind == "plain-bool":
         what = "a substitution object" if f.type == "substitution" else "a non-empty string"

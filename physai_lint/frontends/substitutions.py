@@ -59,8 +59,8 @@ ROS1_SUBSTITUTIONS: dict[str, str] = {
 # Substitutions missing from humble's expose registry: name -> first distro that has them.
 # launch_log_dir came with iron (launch #652, ``LaunchLogDir``); humble has only ``log_dir``.
 DISTRO_ONLY_SUBSTITUTIONS: dict[str, str] = {
-    "any": "jazzy", "all": "jazzy", "equals": "jazzy", "not-equals": "jazzy", "if": "jazzy",
-    "file-content": "jazzy", "launch_log_dir": "iron",
+    "any": "iron", "all": "iron", "equals": "iron", "not-equals": "iron", "if": "iron",
+    "file-content": "iron", "launch_log_dir": "iron",
 }
 # What ``$(launch_log_dir)`` becomes (the directory is only known at run time).
 LAUNCH_LOG_DIR_REASON = "launch log directory ($(launch_log_dir))"

@@ -355,12 +355,12 @@ class TypeFact:
     "remap", a remap rule that is not a tuple (a list, or a dict's key); "plain-bool" and
     "plain-number", a string or substitution where launch uses the value as is (``shell``,
     ``respawn_delay``); "entities", a string, number or substitution where launch wants actions
-    (``on_exit``). ``call`` names the
+    (``on_exit``); "path-string", one string where PathJoinSubstitution iterates components. ``call`` names the
     argument as written (``DeclareLaunchArgument(default_value=...)``), ``value`` is the Python
     value's repr (shortened) and ``type`` its type's name."""
 
     kind: Literal["text", "pairs", "remap", "remap-bare", "plain-bool", "plain-number", "entities", "period",
-                  "event"]
+                  "event", "part", "path-string"]
     call: str
     value: str
     type: str

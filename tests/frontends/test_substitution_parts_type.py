@@ -33,3 +33,11 @@ def test_parts_that_are_no_substitution(demo_findings):
     assert found[0][1].startswith("Command(command=[...]) is given [PathJoinSubstitution(")
     assert found[0][1].endswith("raises \"TypeError: Failed to normalize given item of type '<class 'list'>'\" "
                                 "when the description is built")
+
+
+def test_a_path_join_given_one_string_joins_its_characters(demo_findings):
+    text = LAUNCH.replace("[FindPackageShare('demo'), 'urdf', [LaunchConfiguration('robot'), '.urdf']]",
+                          "'urdf/arm.urdf'")
+    found = [(line, msg) for line, msg in demo_findings({"launch/a.launch.py": text}, "launch/a.launch.py", "L008")
+             if msg.startswith("PathJoinSubstitution")]
+    assert [(line, msg.split(", so it yields ")[1].split(" ")[0]) for line, msg in found] == [(10, "'/a/r/m/./u/r/d/f'")]

@@ -618,6 +618,10 @@ def make_lobj(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any],
     short = api.short(qual)
     if short in _SUBSTITUTION_LISTS and api.is_substitution(qual):
         _check_parts(ev, obj, short)
+    elif short == "PathJoinSubstitution" and isinstance(text := obj.arg(0, "substitutions"), str) and len(text) > 1:
+        # since ros2/launch#838 (humble's 2025 sync on) each item of the iterable is a component,
+        # and a string's items are its characters
+        ev.wrong_type("path-string", "PathJoinSubstitution(substitutions=...)", text, obj.arg_span(0, "substitutions"))
     if qual == "launch.LaunchDescription":
         init = obj.arg(0, "initial_entities")
         obj.extra["entities"] = list(init) if isinstance(init, (list, tuple)) else ([] if init is None else [init])

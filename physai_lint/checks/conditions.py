@@ -368,6 +368,49 @@ def condition_never_true(ctx: CheckContext) -> Iterator[Diagnostic]:
                 f"{raw}: {why}; the action is never run",
                 help="fix the compared value or the condition, or remove the action if it is dead code",
                 key=raw)
+    yield from _equals_unset(ctx, set_names)
+
+
+def _equals_unset(ctx: CheckContext, set_names: set[str] | None) -> Iterator[Diagnostic]:
+    """``LaunchConfigurationEquals('x', 'v')`` where no launch file declares, sets or passes ``x``
+    and no run gives it: launch's ``_predicate_func`` catches the unset configuration's KeyError
+    and compares it as never equal (it does not raise, unlike LaunchConfiguration), so the action
+    never runs. Mostly a misspelt argument name."""
+    if set_names is None:
+        return
+    declared: set[str] = set()
+    for lf in ctx.launch_files.values():
+        for a in _walk(lf.actions):
+            if isinstance(a, ir.DeclareArgument):
+                declared.add(a.name)
+            elif isinstance(a, ir.Include):
+                if a.arguments is None:
+                    return  # an include passing arguments not known may pass it
+                declared.update(arg.name for arg in a.arguments)
+    given = {r.name for launch in ctx.launches for r in launch.config_reads if r.defined}
+    seen: set[object] = set()
+    for path in sorted(ctx.launch_files):
+        for a in _walk(ctx.launch_files[path].actions):
+            cond = getattr(a, "condition", None)
+            if cond is None or cond.span in seen or not (cond.raw or "").startswith("LaunchConfigurationEquals"):
+                continue
+            cmp = cond.value[0] if len(cond.value) == 1 and isinstance(cond.value[0], Compare) else None
+            if cmp is None or cmp.op != "equals" or not cmp.left or not isinstance(cmp.left[0], LaunchConfig):
+                continue
+            name = literal_of(cmp.left[0].name)
+            if name is None or name in declared or name in set_names or name in given:
+                continue
+            seen.add(cond.span)
+            from physai_lint.checks._util import suggestion
+
+            hint = suggestion(name, declared)
+            yield Diagnostic(
+                "L108", cond.span,
+                f'LaunchConfigurationEquals(...) compares launch configuration "{name}", which no launch '
+                "file declares, sets or passes: launch compares an unset configuration as equal to "
+                f"nothing (it does not raise), so the action is never run{'; ' + hint if hint else ''}",
+                help=f'use the declared argument\'s name, or declare "{name}" with DeclareLaunchArgument',
+                key=f"unset:{name}")
 
 
 @rule("L116", "python-expression-error")

@@ -126,6 +126,11 @@ class BoolOp:
     span: Span | None = None
 
 
+# What LaunchConfigurationEquals/NotEquals compare an unset configuration as (the default of their
+# LaunchConfig): no value launch gives is this text
+UNSET_CONFIGURATION = "\x00(unset)"
+
+
 @dataclass(frozen=True, slots=True)
 class Compare:
     """``EqualsSubstitution``/``$(equals A B)`` and ``NotEqualsSubstitution``/``$(not-equals A B)``."""

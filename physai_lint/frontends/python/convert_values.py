@@ -13,7 +13,15 @@ from physai_lint.model.launch import (
     ParamsUnknown,
 )
 from physai_lint.model.span import Span
-from physai_lint.model.values import PList, PLit, PSubst, PUnknown, PValue, Value
+from physai_lint.model.values import (
+    UNSET_CONFIGURATION,
+    PList,
+    PLit,
+    PSubst,
+    PUnknown,
+    PValue,
+    Value,
+)
 
 from . import api
 from .runtime import KPath, LObj, Opaque, SStr, SymBool, SymStr, type_name
@@ -170,9 +178,6 @@ def _nav2(o: LObj, n: str, s: Span) -> V.Subst:
         _val(o, 0, "source_file"), _rewrites(o, 1, "param_rewrites"), opt_value(o, 2, "root_key"),
         _rewrites(o, 3, "key_rewrites"), _rewrites(o, 4, "value_rewrites"),
         convert if isinstance(convert, bool) else None, s)
-
-
-UNSET_CONFIGURATION = "\x00(unset)"  # what LaunchConfigurationEquals compares an unset configuration as
 
 
 def to_condition(c: Any, span: Span) -> Condition | None:

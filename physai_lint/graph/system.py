@@ -11,6 +11,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, Literal
 
+from physai_lint.interfaces.arguments import ARGUMENT_DECIDED, from_arguments
 from physai_lint.interfaces.model import LIFECYCLE_ENDPOINTS, with_lifecycle_endpoints
 from physai_lint.resolve.model import EffRemap, LaunchResult, NodeInstance
 from physai_lint.resolve.names import expand_topic_name, name_rejected
@@ -141,6 +142,8 @@ def build_graph(launch: LaunchResult, interfaces: Any, include_inactive: bool = 
             # endpoints stay for the rules about the names its code uses (N104)
             g.rejected.add(node.id)
         iface = interfaces.get(node.package, node.executable) if interfaces is not None else None
+        if (node.package, node.executable) in ARGUMENT_DECIDED:
+            iface = from_arguments(iface, node)  # the Gazebo bridges: their topics are arguments
         if iface is None:
             continue
         if node.kind == "lifecycle_node" or getattr(iface, "lifecycle", False):

@@ -17,6 +17,7 @@ from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model import launch as ir
 from physai_lint.model.findings import Diagnostic
 from physai_lint.model.values import (
+    UNSET_CONFIGURATION,
     BoolOp,
     Compare,
     IfElse,
@@ -398,7 +399,8 @@ def _equals_unset(ctx: CheckContext, set_names: set[str] | None) -> Iterator[Dia
             if cmp is None or cmp.op != "equals" or not cmp.left or not isinstance(cmp.left[0], LaunchConfig):
                 continue
             name = literal_of(cmp.left[0].name)
-            if name is None or name in declared or name in set_names or name in given:
+            if name is None or name in declared or name in set_names or name in given \
+                    or literal_of(cmp.right) == UNSET_CONFIGURATION:  # expected_value=None: "unset?"
                 continue
             seen.add(cond.span)
             from physai_lint.checks._util import suggestion
@@ -423,9 +425,10 @@ def python_expression_error(ctx: CheckContext) -> Iterator[Diagnostic]:
             "L116", span,
             f"PythonExpression / $(eval) evaluates {text!r}, which raises {why}; launch stops with "
             "that error when it performs the substitution",
-            help=("a launch argument's text is pasted into the expression as code: compare it as a "
-                  "quoted string (\"'$(var mode)' == 'mapping'\", PythonExpression([\"'\", mode, \"' == "
-                  "'mapping'\"])), or give the value Python spells (True/False, not true/false)")
+            help=("if a launch argument's value is pasted into the expression, it is code, not a string: "
+                  "compare it quoted (\"'$(var mode)' == 'mapping'\", PythonExpression([\"'\", mode, \"' == "
+                  "'mapping'\"])), or give the value Python spells (True/False, not true/false); otherwise "
+                  "use a builtin, one of math's names or a module the expression imports")
             if name else "fix the expression so that it is valid Python once its substitutions are "
                          "replaced by their values",
             key=(text, why))

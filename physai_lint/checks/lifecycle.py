@@ -119,7 +119,7 @@ def event_reaches_nothing(ctx: CheckContext) -> Iterator[Diagnostic]:
         lifecycle = [n for n in launch.nodes if n.kind == "lifecycle_node"]
         names_known = not launch.opaque and all(n.fqn is not None for n in lifecycle)
         for how, value, span in launch.change_matchers:
-            if span in seen:
+            if (span, value) in seen:  # a helper called with several names: one finding each
                 continue
             if how == "action":
                 d = _action_matcher(launch, value, span)
@@ -128,7 +128,7 @@ def event_reaches_nothing(ctx: CheckContext) -> Iterator[Diagnostic]:
             else:
                 continue  # a lifecycle node whose name is not known may be the one named
             if d is not None:
-                seen.add(span)
+                seen.add((span, value))
                 yield d
 
 
@@ -158,19 +158,22 @@ def _name_matcher(launch: LaunchResult, lifecycle: list[NodeInstance], name: str
     if any(n.fqn == full for n in lifecycle):
         return None
     plain = next((n for n in launch.nodes if n.fqn == full and n.kind != "lifecycle_node"), None)
-    hint = ""
+    hint = how = ""
     if plain is not None:
         why = f"{full} is a {plain.kind.replace('_', ' ')} action, not a LifecycleNode"
     else:
         fqns = sorted({n.fqn for n in lifecycle if n.fqn})
         base = full.rsplit("/", 1)[-1]
-        close = [f for f in fqns if f.rsplit("/", 1)[-1] == base][:3] or did_you_mean(full, fqns)
+        same_base = [f for f in fqns if f.rsplit("/", 1)[-1] == base][:3]
+        close = same_base or did_you_mean(full, fqns)
         hint = ("; did you mean " + " or ".join(f'"{c}"' for c in close) + "?") if close else ""
+        if same_base:  # the name is right, its namespace is not part of the comparison
+            how = " (a namespace of the node, of its file or pushed by an including file is not added)"
         why = "no LifecycleNode of this launch has that name"
     return Diagnostic(
         "S207", span,
-        f"ChangeState's matches_node_name({name!r}) compares with the full name \"{full}\" (the "
-        f"namespace is not added), and {why}: the transition reaches no node{hint}",
+        f"ChangeState's matches_node_name({name!r}) compares with the full name \"{full}\"{how}, "
+        f"and {why}: the transition reaches no node{hint}",
         help="give matches_node_name the node's full name with its namespace, or match the action "
              "itself with matches_action(<the LifecycleNode>)",
         related=(Related(plain.span, "the node with that name"),) if plain is not None else (), key=full)

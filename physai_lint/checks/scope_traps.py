@@ -32,7 +32,7 @@ def invalid_condition_value(ctx: CheckContext) -> Iterator[Diagnostic]:
             f"launch fails with SubstitutionFailure: \"Cannot convert value '{value}' to "
             f"'<class 'bool'>'\"",
             help='pass "true" or "false" (IfCondition also takes "1"/"0", the boolean substitutions do '
-                 "not), or compare explicitly with EqualsSubstitution / PythonExpression",
+                 "not), or compare explicitly with PythonExpression (EqualsSubstitution from iron on)",
             key=(how, value))
 
 

@@ -324,7 +324,7 @@ def _eval(args: list[Value], span: Span) -> Subst:
     if len(args) > 1:
         lit = _literal(args[1])
         if lit is None:
-            return PythonExpr(args[0], (), span)
+            return PythonExpr(args[0], None, span, args[1])  # the modules are not known
         modules = tuple(m.strip() for m in lit.split(",") if m.strip())
     return PythonExpr(args[0], modules, span)
 

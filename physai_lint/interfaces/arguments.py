@@ -33,11 +33,13 @@ def from_arguments(iface: NodeInterface | None, node: Any) -> NodeInterface | No
         return None
     base = iface or NodeInterface(source="ros_gz arguments")
     if key in SPAWNERS:
-        topic = _option(args, "-topic")
-        if topic is False or any(_option(args, f) is False for f in ("-file", "-string")):
+        if any(_may_set(node, name) for name in ("file", "string", "topic", "param")):
+            return None  # since jazzy create reads these parameters before its flags
+        topic = _option(args, "topic")
+        if topic is False or any(_option(args, f) is False for f in ("file", "param", "string")):
             return None
-        if _option(args, "-file") or _option(args, "-string"):
-            topic = None  # create.cpp reads -file, then -string, before -topic
+        if _option(args, "file") or _option(args, "param") or _option(args, "string"):
+            topic = None  # create.cpp reads -file, -param and -string before -topic
         subs = [Endpoint(topic, "std_msgs/msg/String")] if topic else []
         return replace(base, subscribers=subs, publishers=[], services=[], clients=[])
     if _may_set(node, "config_file"):
@@ -78,13 +80,14 @@ def _own_arguments(arguments: tuple[str | None, ...]) -> list[str] | None:
 
 
 def _option(args: list[str], flag: str) -> str | None | bool:
-    """The value after ``flag`` (gflags also take ``-flag=value``); None when absent, False when
-    malformed."""
+    """The value of gflags flag ``flag`` (``-flag value``, ``--flag value``, ``-flag=value``,
+    ``--flag=value``); None when absent, False when malformed."""
     for i, a in enumerate(args):
-        if a == flag:
-            return args[i + 1] if i + 1 < len(args) else False
-        if a.startswith(flag + "="):
-            return a[len(flag) + 1:]
+        for form in ("-" + flag, "--" + flag):
+            if a == form:
+                return args[i + 1] if i + 1 < len(args) else False
+            if a.startswith(form + "="):
+                return a[len(form) + 1:]
     return None
 
 
@@ -98,10 +101,12 @@ def _bridge(arg: str) -> tuple[str, str, str] | None:
     for delim, direction in (("@", "both"), ("[", "gz_to_ros"), ("]", "ros_to_gz")):
         pos = rest.find(delim)
         if pos > 0:
-            ros_type = rest[:pos]
+            ros_type, gz = rest[:pos], rest[pos + 1:]
             if "/srv/" in ros_type:
-                return (name, ros_type, "service") if direction == "both" else None
-            return name, ros_type, direction
+                # a service bridge both ways names the Gazebo request and reply types: REQ@REP
+                req, _, rep = gz.partition("@")
+                return (name, ros_type, "service") if direction == "both" and req and rep else None
+            return (name, ros_type, direction) if gz and "@" not in gz else None
         if pos == 0:
             return None
     return (name, rest, "service") if "/srv/" in rest else None

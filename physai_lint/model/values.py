@@ -104,8 +104,9 @@ class PythonExpr:
     """``PythonExpression([...])`` / ``$(eval EXPR [MODULES])``: evaluated by the safe evaluator only."""
 
     expression: "Value"
-    modules: tuple[str, ...] = ("math",)
+    modules: tuple[str, ...] | None = ("math",)  # None: not known statically
     span: Span | None = None
+    modules_value: "Value | None" = None  # the modules argument when it is not a literal
 
 
 @dataclass(frozen=True, slots=True)

@@ -52,7 +52,7 @@ _YAML_BOOLS = {**dict.fromkeys(("yes", "Yes", "YES", "true", "True", "TRUE", "on
 
 def yaml_bool(text: str) -> bool | None:
     """``coerce_to_type(text, bool)``: True/False, or None when launch raises ValueError."""
-    return _YAML_BOOLS.get(text.strip(" "))
+    return _YAML_BOOLS.get(text.strip())
 
 
 def condition_truth(text: str) -> bool | None:
@@ -238,12 +238,16 @@ class Evaluator:
         return self.packages.prefix_dir(pkg)
 
     def _python_expr(self, p: v.PythonExpr, scope: Scope) -> str | None:
+        modules = p.modules
+        if p.modules_value is not None:  # $(eval EXPR $(var mods)): read, and known when its value is
+            text = self.eval(p.modules_value, scope)
+            modules = None if text is None else tuple(m.strip() for m in text.split(",") if m.strip())
         expr = self.eval(p.expression, scope)
         if expr is None:
             return None
         from physai_lint.resolve.safe_eval import SafeEvalError, SafeEvalUnknown, safe_eval
 
-        result = safe_eval(expr, p.modules)
+        result = safe_eval(expr, modules)
         if isinstance(result, SafeEvalUnknown):
             if isinstance(result, SafeEvalError) and self.on_bad_expression is not None:
                 self.on_bad_expression(p.span, expr, result.reason)

@@ -65,6 +65,7 @@ class Frame:
     # builds new action objects (the same action twice in one load is one object run twice)
     load: int = 0
     ran_by: Span | None = None  # the actions of the event handler that runs these (on_exit=[...])
+    at_shutdown: bool = False  # run by an OnShutdown handler, directly or through a timer or handler
 
 
 @dataclass(slots=True)
@@ -571,7 +572,8 @@ class Instantiator:
         self.nodes.watch(h, key, fr)
         self.deferred.append((h.actions, locals_,
                               replace(fr, deferred=h.event, trigger=trigger, ran_by=h.actions_span or h.span,
-                                      active=fr.active if h.event != "on_shutdown" else None), None))
+                                      active=fr.active if h.event != "on_shutdown" else None,
+                                      at_shutdown=fr.at_shutdown or h.event == "on_shutdown"), None))
 
     def add_edge(self, before: str, after: str, reason: str, span: Span, delay: float | None) -> None:
         self.result.edges.append(StartEdge(before, after, reason, span, delay))

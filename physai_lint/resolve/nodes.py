@@ -538,7 +538,7 @@ class NodeBuilder:
         file (``ExecuteLocal.execute`` raises "executed more than once"); ``at_shutdown``: one an
         OnShutdown handler runs."""
         fr = self.inst.frame
-        if fr.active is not False and fr.deferred == "on_shutdown":
+        if fr.active is not False and fr.at_shutdown:
             self.inst.result.at_shutdown.append((inst_.id, fr.ran_by))
         if fr.active is not False:
             first = self.inst.executed.setdefault((fr.load, inst_.action_id), inst_.id)

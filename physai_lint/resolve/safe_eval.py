@@ -45,7 +45,7 @@ class _NameError(Exception):
 
 # What ``eval(text, {}, locals)`` finds besides ``locals``: the builtins (``{}`` as globals gets
 # ``__builtins__``)
-_BUILTIN_NAMES = frozenset(dir(builtins))
+_BUILTIN_NAMES = frozenset(dir(builtins)) | {"__builtins__"}
 _MATH_NAMES = frozenset(dir(math))
 
 
@@ -159,7 +159,9 @@ _SET_METHODS = frozenset({"intersection", "union", "difference", "symmetric_diff
 
 
 class _Interp:
-    def __init__(self, modules: tuple[str, ...]) -> None:
+    def __init__(self, modules: tuple[str, ...] | None) -> None:
+        self.modules_known = modules is not None  # else any name may be a module's
+        modules = modules or ()
         self.math_flat = "math" in modules  # humble evaluates with math.__dict__ as globals
         self.modules = modules
 
@@ -192,7 +194,7 @@ class _Interp:
         """Raise ``_NameError`` when ``eval`` would not find ``name``: not a builtin, not one of
         math's names (humble evaluates with ``math.__dict__`` as locals; later distros add each
         module's names when it is math, and each module by its name)."""
-        if name in _BUILTIN_NAMES or (self.math_flat and name in _MATH_NAMES) or \
+        if not self.modules_known or name in _BUILTIN_NAMES or (self.math_flat and name in _MATH_NAMES) or \
                 any(name == m.split(".")[0] for m in self.modules):
             return
         raise _NameError(f"NameError: name {name!r} is not defined")
@@ -382,7 +384,7 @@ def _parse(expr: str) -> ast.Expression | SafeEvalUnknown:
         return SafeEvalUnknown(f"not a Python expression: {err}")
 
 
-def safe_eval(expr: str, modules: tuple[str, ...] = ("math",)) -> object | SafeEvalUnknown:
+def safe_eval(expr: str, modules: tuple[str, ...] | None = ("math",)) -> object | SafeEvalUnknown:
     """Evaluate ``expr`` like ``PythonExpression`` would, or say why it cannot be known
     (``SafeEvalError`` when eval would raise)."""
     if len(expr) > MAX_EXPR_CHARS:

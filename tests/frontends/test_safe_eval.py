@@ -112,3 +112,8 @@ def test_a_parser_out_of_stack_says_nothing_of_eval(monkeypatch: pytest.MonkeyPa
     finally:
         se._parse.cache_clear()
     assert isinstance(result, SafeEvalUnknown) and not isinstance(result, SafeEvalError)
+
+
+def test_modules_not_known_leave_names_unknown() -> None:
+    assert isinstance(safe_eval("pi > 3", modules=None), SafeEvalUnknown)
+    assert not isinstance(safe_eval("pi > 3", modules=None), SafeEvalError)

@@ -70,3 +70,18 @@ def test_bridges_in_the_graph(demo_findings: Any) -> None:
     assert [m.split(" but")[0] for _, m in t201] == ['/robot1/ros_gz_bridge subscribes to "/robot1/cmd_vel"']
     n101 = demo_findings(files, "launch/a.launch.py", "N101")
     assert [line for line, _ in n101] == [9]  # both bridges are /robot1/ros_gz_bridge
+
+
+@pytest.mark.parametrize("arg", ["x@std_msgs/msg/String[", "x@std_msgs/msg/String@gz.msgs.StringMsg@more",
+                                 "/s@std_srvs/srv/Trigger@gz.msgs.Empty"])
+def test_arguments_the_bridge_refuses(arg: str) -> None:
+    assert _bridge(arg) is None
+
+
+def test_create_reads_param_before_topic_and_double_dash_flags() -> None:
+    param = from_arguments(None, node("ros_gz_sim", "create", ("-param", "robot_description", "-topic", "rd")))
+    assert param is not None and param.subscribers == []
+    dashes = from_arguments(None, node("ros_gz_sim", "create", ("--topic", "rd")))
+    assert dashes is not None and [e.name for e in dashes.subscribers or []] == ["rd"]
+    by_parameter = SimpleNamespace(params=(SimpleNamespace(name="topic"),))
+    assert from_arguments(None, node("ros_gz_sim", "create", (), (by_parameter,))) is None

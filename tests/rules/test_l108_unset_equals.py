@@ -27,3 +27,8 @@ def test_a_misspelt_name_is_never_equal(demo_findings: Any) -> None:
 
 def test_the_declared_name_is_fine(demo_findings: Any) -> None:
     assert demo_findings({"launch/a.launch.py": LAUNCH.replace("NAME", "'mode'")}, "launch/a.launch.py", "L108") == []
+
+
+def test_expected_none_asks_whether_it_is_unset(demo_findings: Any) -> None:
+    text = LAUNCH.replace("NAME, 'localization'", "'robot_ns', None")
+    assert demo_findings({"launch/a.launch.py": text}, "launch/a.launch.py", "L108") == []

@@ -34,3 +34,11 @@ def test_a_node_in_a_group_of_the_handler(demo_findings: Any) -> None:
 
 def test_a_group_disabled_by_its_condition_starts_nothing(demo_findings: Any) -> None:
     assert demo_findings({"launch/a.launch.py": LAUNCH.replace("SAVE", "false")}, "launch/a.launch.py", "S105") == []
+
+
+def test_a_timer_in_the_handler_starts_nothing_either(demo_findings: Any) -> None:
+    text = LAUNCH.replace("GroupAction([saver], condition=IfCondition(LaunchConfiguration('save'))),",
+                          "TimerAction(period=0.5, actions=[saver]),").replace(
+        "GroupAction, LogInfo", "GroupAction, LogInfo, TimerAction")
+    found = demo_findings({"launch/a.launch.py": text.replace("SAVE", "true")}, "launch/a.launch.py", "S105")
+    assert [line for line, _ in found] == [14]

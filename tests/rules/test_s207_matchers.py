@@ -89,5 +89,15 @@ def test_a_namespace_pushed_by_the_includer_is_not_added_either(demo_findings: A
         "from launch.launch_description_sources")
     found = demo_findings({"launch/a.launch.py": child, "launch/top.launch.py": parent}, "launch/top.launch.py", "S207")
     assert [m.split(":")[0] for _, m in found] == [
-        "ChangeState's matches_node_name('/lidar') compares with the full name \"/lidar\" (the namespace is "
-        "not added), and no LifecycleNode of this launch has that name"]
+        "ChangeState's matches_node_name('/lidar') compares with the full name \"/lidar\" (a namespace of the "
+        "node, of its file or pushed by an including file is not added), and no LifecycleNode of this launch "
+        "has that name"]
+
+
+def test_a_helper_called_with_two_wrong_names_reports_each(demo_findings: Any) -> None:
+    text = HEAD.replace("@MATCHER@", "matches_node_name(NAME)").replace("@NS@", "'sensors'").replace(
+        "        configure(matches_node_name(NAME)),",
+        "        configure(matches_node_name('lidar')),\n        configure(matches_node_name('/camera')),")
+    found = demo_findings({"launch/a.launch.py": text}, "launch/a.launch.py", "S207")
+    assert sorted(m.split(" compares")[0] for _, m in found) == [
+        "ChangeState's matches_node_name('/camera')", "ChangeState's matches_node_name('lidar')"]

@@ -120,7 +120,8 @@ def subst(o: LObj) -> V.Subst:
         return V.Command(_val(o, 0, "command"), s)
     if n == "PythonExpression":
         mods = o.arg(1, "python_modules", None)
-        modules = tuple(str(m) for m in mods) if isinstance(mods, (list, tuple)) and all(isinstance(m, str) for m in mods) else ("math",)
+        modules: tuple[str, ...] | None = ("math",) if mods is None else tuple(str(m) for m in mods) \
+            if isinstance(mods, (list, tuple)) and all(isinstance(m, str) for m in mods) else None  # None: not known
         return V.PythonExpr(_val(o, 0, "expression"), modules, s)
     if n == "AnonName":
         return V.Anon(_val(o, 0, "name"), s)

@@ -106,6 +106,11 @@ def ir_objects(ctx: CheckContext, path: str) -> list[Any]:
     return run_memo(ctx.options.setdefault("_ir_objects", {}), path, lf, lambda: objects(lf.actions))  # type: ignore[no-any-return]
 
 
+# The launch action class behind a NodeInstance kind, for messages ("process" is ExecuteProcess;
+# callers that word a process otherwise give their own default to ``.get``)
+ACTION_CLASSES = {"node": "Node", "lifecycle_node": "LifecycleNode", "container": "ComposableNodeContainer"}
+
+
 def where(node: NodeInstance) -> str:
     return node.fqn or (f'"{node.package}/{node.executable}"' if node.package else "the node")
 

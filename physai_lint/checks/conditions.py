@@ -13,6 +13,7 @@ import itertools
 from collections.abc import Iterator
 from typing import Any
 
+from physai_lint.checks._util import once, suggestion
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model import launch as ir
 from physai_lint.model.findings import Diagnostic
@@ -403,8 +404,6 @@ def _equals_unset(ctx: CheckContext, set_names: set[str] | None) -> Iterator[Dia
                     or literal_of(cmp.right) == UNSET_CONFIGURATION:  # expected_value=None: "unset?"
                 continue
             seen.add(cond.span)
-            from physai_lint.checks._util import suggestion
-
             hint = suggestion(name, declared)
             yield Diagnostic(
                 "L108", cond.span,
@@ -417,8 +416,6 @@ def _equals_unset(ctx: CheckContext, set_names: set[str] | None) -> Iterator[Dia
 
 @rule("L116", "python-expression-error")
 def python_expression_error(ctx: CheckContext) -> Iterator[Diagnostic]:
-    from physai_lint.checks._util import once
-
     for span, text, why in once(ctx, "expression_errors", lambda e: e):
         name = why.startswith("NameError")
         yield Diagnostic(

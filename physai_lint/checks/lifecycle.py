@@ -8,6 +8,7 @@ from typing import Any
 
 from physai_lint.checks._params import effective, fully_known
 from physai_lint.checks._util import (
+    ACTION_CLASSES,
     CONTAINER_EXECUTABLES,
     all_nodes,
     command_words,
@@ -139,8 +140,8 @@ def _action_matcher(launch: LaunchResult, target: str, span: Any) -> Diagnostic 
     if not nodes or any(n.kind in ("lifecycle_node", "composable_node") for n in nodes):
         return None
     node = nodes[0]
-    what = {"node": "a Node", "container": "a ComposableNodeContainer", "process": "an ExecuteProcess"}.get(
-        node.kind, f"a {node.kind}")
+    cls = ACTION_CLASSES.get(node.kind, "ExecuteProcess")
+    what = f"{'an' if cls[0] in 'AEIOU' else 'a'} {cls}"
     return Diagnostic(
         "S207", span,
         f"ChangeState is aimed with matches_action() at {what} action ({where(node)}), not a "

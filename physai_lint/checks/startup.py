@@ -6,9 +6,10 @@ import math
 from collections.abc import Iterator
 
 from physai_lint.checks._params import effective
-from physai_lint.checks._util import command_words, once
+from physai_lint.checks._util import ACTION_CLASSES, command_words, once
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic, Related
+from physai_lint.resolve.model import NodeInstance
 from physai_lint.resolve.nodes import EVENT_VERB, never_fires_help
 
 
@@ -111,7 +112,7 @@ def process_run_twice(ctx: CheckContext) -> Iterator[Diagnostic]:
                    else "a timer runs it again" if b.in_timer else "the launch description runs it twice")
             yield Diagnostic(
                 "S104", span,
-                f'the {_KIND.get(a.kind, "process")} action "{a.fqn or what}" ({a.package}/{what}) is one object run '
+                f'the {ACTION_CLASSES.get(a.kind, "process")} action "{a.fqn or what}" ({a.package}/{what}) is one object run '
                 f"twice: {how}; launch runs an action object once, and the second run raises "
                 f"\"ExecuteLocal action '{what}-N': executed more than once\", which ends the launch",
                 help="run it once: drop the second reference, or build a second action (a function that "
@@ -132,14 +133,9 @@ def process_started_at_shutdown(ctx: CheckContext) -> Iterator[Diagnostic]:
             if node is None or node.active is False or node.span in seen:
                 continue
             seen.add(node.span)
-            what = node.executable or "process"
-            words = command_words(node) if node.kind == "process" else None
-            label = f'"{node.fqn}" ({node.package}/{what})' if node.fqn and node.package \
-                else f'"{node.package}/{what}"' if node.package \
-                else f'"{" ".join(w or "<unknown>" for w in words)}"' if words else f'"{what}"'
             yield Diagnostic(
                 "S105", handler or node.span,
-                f"the {_KIND.get(node.kind, 'ExecuteProcess')} action {label} is started by an OnShutdown "
+                f"the {ACTION_CLASSES.get(node.kind, 'ExecuteProcess')} action {_label(node)} is started by an OnShutdown "
                 "handler: when the launch ends on Ctrl-C (SIGINT) or because its processes have all "
                 "exited, launch marks itself as shutting down before the handlers run, and "
                 "ExecuteLocal.execute starts nothing then; it runs only when the launch file emits "
@@ -151,4 +147,11 @@ def process_started_at_shutdown(ctx: CheckContext) -> Iterator[Diagnostic]:
                 key=node.action_id)
 
 
-_KIND = {"node": "Node", "lifecycle_node": "LifecycleNode", "container": "ComposableNodeContainer"}
+def _label(node: NodeInstance) -> str:
+    """How S105 names a process: its full name and package/executable, else package/executable,
+    else an ExecuteProcess's command line."""
+    what = node.executable or "process"
+    if node.package:
+        return f'"{node.fqn}" ({node.package}/{what})' if node.fqn else f'"{node.package}/{what}"'
+    words = command_words(node) if node.kind == "process" else None
+    return f'"{" ".join(w or "<unknown>" for w in words)}"' if words else f'"{what}"'

@@ -9,6 +9,7 @@ import hashlib
 import os
 import posixpath
 import re
+import stat
 from collections.abc import Collection, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 from typing import Any, Literal
@@ -728,8 +729,6 @@ class PackageTree:
                 except (OSError, ValueError):
                     found = None
                 else:
-                    import stat
-
                     found = "dir" if stat.S_ISDIR(st.st_mode) and parts[-1] not in _SKIPPED_DIRS \
                         else "file" if stat.S_ISREG(st.st_mode) else None
         self._stats[rel] = found

@@ -153,3 +153,31 @@ def test_the_hot_model_classes_have_the_fast_init_and_pickle_round_trip():
     fp = FileParam("rate", 1.0, "double", "1.0", span, span)
     assert fp.quoted is False and fp.launch_value is None
     assert pickle.loads(pickle.dumps(fp)) == fp
+
+
+def test_a_string_literal_with_its_position_pickles_and_copies() -> None:
+    from physai_lint.frontends.python.runtime import SStr
+
+    where = span.Span("a.launch.py", 3, 5, 3, 9)
+    s = SStr("name", where)
+    for back in (pickle.loads(pickle.dumps(s, protocol=pickle.HIGHEST_PROTOCOL)),
+                 pickle.loads(pickle.dumps(s, protocol=0)), copy.deepcopy(s), copy.copy(s)):
+        assert type(back) is SStr and back == "name" and back.span == where
+
+
+def test_a_composable_node_s_extra_arguments_come_back_from_a_pickle(tmp_path: Path) -> None:
+    # Their keys are the literals as written (SStr): the parse result used to fail to unpickle,
+    # so a --jobs helper's result and a disk-cache entry of the file were both thrown away.
+    path = tmp_path / "c.launch.py"
+    path.write_text(
+        "from launch import LaunchDescription\n"
+        "from launch_ros.actions import ComposableNodeContainer\n"
+        "from launch_ros.descriptions import ComposableNode\n"
+        "def generate_launch_description():\n"
+        "    return LaunchDescription([ComposableNodeContainer(\n"
+        "        name='c', namespace='', package='rclcpp_components', executable='component_container',\n"
+        "        composable_node_descriptions=[ComposableNode(package='p', plugin='p::N', name='n',\n"
+        "            extra_arguments=[{'use_intra_process_comms': True}])])])\n")
+    value, _ = run_job(Job("launch", str(path), path.read_text(), "humble"), None)
+    back = pickle.loads(pickle.dumps(value, protocol=pickle.HIGHEST_PROTOCOL))
+    assert back == value

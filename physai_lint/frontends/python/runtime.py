@@ -24,6 +24,12 @@ class SStr(str):
         obj.span = span
         return obj
 
+    def __reduce__(self) -> tuple[Any, ...]:
+        # str's own reduce calls ``SStr(text)`` without the span, which raises: a parse result
+        # holding one (a ``ComposableNode``'s ``extra_arguments`` keys) failed to come back from
+        # a ``--jobs`` helper, and from the disk cache, and was parsed again every time.
+        return SStr, (str(self), self.span)
+
 
 @dataclass(eq=False)
 class Opaque:

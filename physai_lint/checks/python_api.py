@@ -3,13 +3,15 @@ L004 substitution-concatenation, L005 undefined-name, L006 missing-generate-laun
 L008 wrong-argument-type."""
 from __future__ import annotations
 
+import posixpath
 from typing import Iterator
 
-from physai_lint.checks._util import python_facts
+from physai_lint.checks._util import once, python_facts
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.checks.markup import PY_NEWER
 from physai_lint.model.findings import Diagnostic
 from physai_lint.model.launch import NameFact, TypeFact
+from physai_lint.model.span import Span
 
 NODE_CLASSES = ("launch_ros.actions.Node", "launch_ros.actions.LifecycleNode",
                 "launch_ros.actions.ComposableNodeContainer", "launch_ros.descriptions.ComposableNode",
@@ -131,6 +133,48 @@ def concatenation(ctx: CheckContext) -> Iterator[Diagnostic]:
                      "build the value as a list of parts ([LaunchConfiguration('x'), '.yaml']) or with "
                      "PathJoinSubstitution([...])",
                 key=f"{fact.how}:{fact.detail}")
+    for span, left, right, line in once(ctx, "glued_commands", _joint):
+        yield _glued_command(span, left, right, line)
+
+
+def _glued_command(span: Span, left: str, right: str, line: str) -> Diagnostic:
+    """L004 for a ``Command([...])`` whose parts run two words together (``glued_words``)."""
+    words = line.split()
+    program = posixpath.basename(words[0]) if words else ""
+    glued = _short(left + right)
+    if ":=" in right:
+        name = right.split(":=", 1)[0]
+        what = f'"{_short(left)}" and "{_short(right)}" are the one argument "{glued}"'
+        if program in ("xacro", "xacro.py") and ":=" not in left:
+            what += ": xacro reads it as a mapping and finds no input file, so the command fails"
+        else:
+            what += ", where two were meant"
+        help_ = f"start the literal with a space (' {name}:=') or put ' ' between the parts"
+    else:
+        what = f'"{left}" and "{_short(right)}" are the one word "{glued}", a program that does not exist, so the command fails'
+        help_ = f"put a space after the program: '{left} '"
+    return Diagnostic(
+        "L004", span,
+        "Command(...) joins its parts with nothing between them and splits the result at spaces: "
+        f"{what} (the command line is '{' '.join(_short(w) for w in words)}')",
+        help=help_, key=_joint((span, left, right, line))[1])
+
+
+def _joint(entry: tuple[Span, str, str, str]) -> tuple[Span, str]:
+    """Which glued words are the same finding: the place and the mapping's name, or the program
+    (two runs of an included file glue ``ns:=robot1`` and ``ns:=robot2`` at one place)."""
+    span, left, right, _ = entry
+    return span, right.split(":=", 1)[0] if ":=" in right else left
+
+
+def _short(text: str, most: int = 48) -> str:
+    """``text``, or when longer than ``most`` its last path components after ".../" (what comes
+    before its first ``/`` kept: the program of ``xacro/opt/ros/...``)."""
+    if len(text) <= most:
+        return text
+    head = text[:text.index("/") + 1] if "/" in text[1:] and not text.startswith("/") else ""
+    cut = text.find("/", len(text) - most + len(head) + 4)
+    return head + ".../" + text[cut + 1:] if cut != -1 else "..." + text[-(most - 3):]
 
 
 @rule("L011", "substitution-tested-in-python")

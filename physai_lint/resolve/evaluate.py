@@ -8,6 +8,7 @@ of configurations that nothing defines.
 from __future__ import annotations
 
 import posixpath
+import re
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
@@ -91,6 +92,9 @@ class Evaluator:
         self.on_bad_condition = on_bad_condition
         # a PythonExpression / $(eval) that raises with the text it gets: (where, text, why)
         self.on_bad_expression: Callable[[Span | None, str, str], None] | None = None
+        # a Command whose parts run together into one word (``glued_words``): (where, the left
+        # word, the right word, the command line)
+        self.on_glued_command: Callable[[Span | None, str, str, str], None] | None = None
         self.on_dirname: Callable[[Span | None, Scope], None] | None = None
         # temporary files that substitutions (nav2_common RewrittenYaml ...) write: path -> file
         self.virtual: dict[str, Any] = {}
@@ -199,15 +203,19 @@ class Evaluator:
             return None
         # Command, FindExecutable, Unknown: never known statically.
         if isinstance(p, v.Command):
-            self.last_command = (p, self._command_line(p.command, scope))
+            self.last_command = (p, self._command_line(p.command, scope, p.span))
         return None
 
-    def _command_line(self, command: v.Value, scope: Scope) -> str | None:
+    def _command_line(self, command: v.Value, scope: Scope, span: Span | None = None) -> str | None:
         """A command's text, ``FindExecutable(name=x)`` standing for its name ``x`` (where on PATH
         it is found does not matter to what the command prints); None when unknown."""
         out: list[str | None] = [self.eval(part.name, scope) if isinstance(part, v.FindExecutable)
                                  else self._part(part, scope) for part in command]  # every part read
-        return None if None in out else "".join(out)  # type: ignore[arg-type]
+        line = None if None in out else "".join(out)  # type: ignore[arg-type]
+        if line is not None and self.on_glued_command is not None:
+            for where, left, right in glued_words(command, out):  # type: ignore[arg-type]
+                self.on_glued_command(where or span, left, right, line)
+        return line
 
     def _config(self, p: v.LaunchConfig, scope: Scope) -> str | None:
         name = self.eval(p.name, scope)
@@ -289,3 +297,46 @@ class Evaluator:
         if truth is None:
             return None
         return truth if kind == "if" else not truth
+
+
+# ``name:=value`` (a xacro mapping, a ROS remap or parameter) at the start of a word.
+_MAPPING_START = re.compile(r"[A-Za-z_][\w./-]*:=")
+# A word that names a program (``xacro``, ``cat``, ``ros2``): letters, digits and ``_.+-`` only.
+_PROGRAM_WORD = re.compile(r"[\w.+-]*[A-Za-z][\w.+-]*")
+
+
+def glued_words(command: v.Value, texts: list[str]) -> list[tuple[Span | None, str, str]]:
+    """Where ``Command([...])`` (``$(command ...)``) runs two words together: launch concatenates
+    the parts' values with nothing between them and splits the result with ``shlex``
+    (``Command.perform``), so a missing space joins what the parts' kinds say are separate words.
+    ``texts``: each part's value. (span of the right part, or None, the word's text before the
+    joint, its text after) for a substitution followed by ``name:=...`` (``'xacro ', file,
+    'ns:=', ns``: the file and the mapping are one word), and for a program name followed by a
+    substitution giving an absolute path (``'xacro', file``: the program ``xacro/opt/...``).
+    Empty parts are skipped (the word before them is the one joined); two literals are never
+    judged: they are written side by side on purpose."""
+    line = "".join(texts)
+    found: list[tuple[Span | None, str, str]] = []
+    prev: int | None = None
+    at = 0  # where texts[i] starts in line
+    for i, text in enumerate(texts):
+        start, at = at, at + len(text)
+        if not text:
+            continue
+        if prev is not None and not texts[prev][-1].isspace() and not text[0].isspace():
+            left, right = command[prev], command[i]
+            before, after = line[:start].split()[-1], line[start:].split()[0]
+            if _joins_two_words(left, right, before, after):
+                found.append((right.span or left.span, before, after))
+        prev = i
+    return found
+
+
+def _joins_two_words(left: v.Subst, right: v.Subst, before: str, after: str) -> bool:
+    """Whether parts ``left`` and ``right``, written with no space between them, make the one
+    word ``before + after`` of two the author meant (``glued_words``)."""
+    if isinstance(right, v.Text):  # a mapping literal right after a substitution
+        return not isinstance(left, v.Text) and _MAPPING_START.match(after) is not None
+    # a program (written, or FindExecutable) right before a substitution's absolute path
+    return isinstance(left, (v.Text, v.FindExecutable)) and not isinstance(right, v.FindExecutable) \
+        and after.startswith("/") and _PROGRAM_WORD.fullmatch(before) is not None

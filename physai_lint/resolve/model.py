@@ -263,6 +263,9 @@ class LaunchResult:
     invalid_conditions: list[tuple[Span, str, str]] = field(default_factory=list)
     # PythonExpression / $(eval) texts that raise when evaluated: (span, text, the error)
     expression_errors: list[tuple[Span, str, str]] = field(default_factory=list)
+    # Command / $(command) lines whose parts run two words together: (span, left word, right
+    # word, the command line)
+    glued_commands: list[tuple[Span, str, str, str]] = field(default_factory=list)
     # $(dirname)/ThisLaunchFileDir evaluated after an include: (span, got, the file's own dir)
     dirname_traps: list[tuple[Span, str, str]] = field(default_factory=list)
     # Start delay of nodes started by timers (node id -> seconds, None when unknown)

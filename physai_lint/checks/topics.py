@@ -403,6 +403,12 @@ def _dangling(ctx: CheckContext, mine: str, other: str, code: str) -> Iterator[D
             if o.resolved and _valid(o.resolved):  # an invalid name (N104) is never suggested
                 by_topic.setdefault(o.resolved, set()).add(o.node)
                 types.setdefault(o.resolved, set()).add(o.type)
+        clocks: dict[str, list[str]] = {}  # topic -> the nodes whose sim time reads it
+        if other == "subscriber":
+            for node_id, topic in _sim_time_clocks(ctx, g):
+                by_topic.setdefault(topic, set()).add(node_id)
+                types.setdefault(topic, set()).add(CLOCK_TYPE)
+                clocks.setdefault(topic, []).append(g.node(node_id).fqn or node_id)
         others = set(by_topic)
         # T202's near miss has subscribers and no publisher (a topic somebody publishes, under its
         # name or one known only at run time, is connected already)
@@ -438,6 +444,8 @@ def _dangling(ctx: CheckContext, mine: str, other: str, code: str) -> Iterator[D
             span = node.span
             if e.remap is not None:
                 span = node.remaps[e.remap].span
+            elif e.where is not None:
+                span = e.where
             if (span, e.resolved) in seen:
                 continue
             seen.add((span, e.resolved))
@@ -448,13 +456,45 @@ def _dangling(ctx: CheckContext, mine: str, other: str, code: str) -> Iterator[D
                      if not (c in connected and _sibling_copy(e.resolved, c, namespaces))]
             if near_miss_only and not close:
                 continue  # an output nobody reads is normal (sensors, diagnostics); a near miss is not
-            hint = (" (did you mean " + " or ".join(f'"{c}"' for c in close) + "?)") if close else ""
+            hint = (" (did you mean " + " or ".join(f'"{c}"' + _clock_readers(clocks.get(c)) for c in close)
+                    + "?)") if close else ""
             verb, missing = ("subscribes to", "nothing publishes it") if mine == "subscriber" else (
                 "publishes", "nothing subscribes to it")
             yield Diagnostic(
                 code, span, f'{node.fqn or node.executable} {verb} "{e.resolved}" but {missing}{hint}',
                 help="remap one end so both use the same name, or launch the missing node",
                 key=f"{node.fqn}:{e.resolved}")
+
+
+CLOCK_TYPE = "rosgraph_msgs/msg/Clock"
+
+
+def _clock_readers(nodes: list[str] | None) -> str:
+    """What the hint says of a topic the time source of nodes with use_sim_time reads."""
+    if not nodes:
+        return ""
+    names = sorted(set(nodes))
+    shown = ", ".join(names[:3]) + (f" and {len(names) - 3} more" if len(names) > 3 else "")
+    return f", which the time source of {shown} (use_sim_time true) subscribes to"
+
+
+def _sim_time_clocks(ctx: CheckContext, g: SystemGraph) -> Iterator[tuple[str, str]]:
+    """(node id, topic) of the clock subscription of each node whose use_sim_time is certainly
+    true: rclcpp's and rclpy's time source subscribe to the absolute "/clock" then (rclcpp
+    ``TimeSource::NodeState::create_clock_sub``, rclpy ``TimeSource._subscribe_to_clock_topic``),
+    which the node's remap rules apply to like any name. No interface lists it: the node's code
+    never names it."""
+    from physai_lint.checks._params import effective
+    from physai_lint.graph.system import apply_remaps
+
+    for node in g.launch.nodes:
+        if node.id not in g.known or node.id in g.rejected:
+            continue
+        ep = effective(ctx, node).get("use_sim_time")
+        if ep is not None and ep.certain and ep.value is True:
+            topic, _ = apply_remaps("/clock", node)
+            if topic is not None:
+                yield node.id, topic
 
 
 def _sibling_copy(name: str, candidate: str, namespaces: set[str]) -> bool:

@@ -36,6 +36,7 @@ class Endpoint:
     type: str | None
     remap: int | None  # index into node.remaps of the rule that applied
     when: tuple[tuple[str, Any], ...] = ()  # parameter values it exists under (interfaces Endpoint.when)
+    where: Span | None = None  # the launch file's text that makes it (a bridge's argument)
 
 
 @dataclass
@@ -142,7 +143,8 @@ def build_graph(launch: LaunchResult, interfaces: Any, include_inactive: bool = 
             # endpoints stay for the rules about the names its code uses (N104)
             g.rejected.add(node.id)
         iface = interfaces.get(node.package, node.executable) if interfaces is not None else None
-        if (node.package, node.executable) in ARGUMENT_DECIDED:
+        decided = (node.package, node.executable) in ARGUMENT_DECIDED
+        if decided:
             iface = from_arguments(iface, node)  # the Gazebo bridges: their topics are arguments
         if iface is None:
             continue
@@ -164,7 +166,7 @@ def build_graph(launch: LaunchResult, interfaces: Any, include_inactive: bool = 
                 resolved, idx = apply_remaps(expanded, node) if expanded else (None, None)
                 (g.rejected_endpoints if node.id in g.rejected else g.endpoints).append(Endpoint(
                     node.id, kind, name, expanded, resolved, getattr(ep, "type", None), idx,
-                    getattr(ep, "when", ())))
+                    getattr(ep, "when", ()), getattr(ep, "span", None) if decided else None))
     return g
 
 

@@ -18,6 +18,8 @@ from dataclasses import replace
 from typing import Any
 
 from physai_lint.interfaces.model import Endpoint, NodeInterface
+from physai_lint.model.span import Span
+from physai_lint.model.values import span_of
 
 BRIDGES = frozenset({("ros_gz_bridge", "parameter_bridge"), ("ros_ign_bridge", "parameter_bridge")})
 SPAWNERS = frozenset({("ros_gz_sim", "create"), ("ros_ign_gazebo", "create")})
@@ -28,9 +30,10 @@ def from_arguments(iface: NodeInterface | None, node: Any) -> NodeInterface | No
     """``iface`` with the endpoints ``node``'s arguments decide, or None when they are not known
     (an argument not known statically, a bridge configuration file that may be given)."""
     key = (node.package, node.executable)
-    args = _own_arguments(node.arguments)
-    if args is None:
+    own = _own_arguments(node.arguments)
+    if own is None:
         return None
+    args = [a for _, a in own]
     base = iface or NodeInterface(source="ros_gz arguments")
     if key in SPAWNERS:
         if any(_may_set(node, name) for name in ("file", "string", "topic", "param")):
@@ -47,27 +50,29 @@ def from_arguments(iface: NodeInterface | None, node: Any) -> NodeInterface | No
     pubs: list[Endpoint] = []
     subs: list[Endpoint] = []
     services: list[Endpoint] = []
-    for arg in args:
+    spans = _argument_spans(node)
+    for i, arg in own:
         bridge = _bridge(arg)
         if bridge is None:
             return None  # the bridge prints its usage and exits: nothing known of it
         name, ros_type, direction = bridge
+        one = Endpoint(name, ros_type, spans[i] if spans else None)
         if direction == "service":
-            services.append(Endpoint(name, ros_type))
+            services.append(one)
             continue
         if direction in ("both", "gz_to_ros"):
-            pubs.append(Endpoint(name, ros_type))
+            pubs.append(one)
         if direction in ("both", "ros_to_gz"):
-            subs.append(Endpoint(name, ros_type))
+            subs.append(one)
     return replace(base, publishers=pubs, subscribers=subs, services=services, clients=[])
 
 
-def _own_arguments(arguments: tuple[str | None, ...]) -> list[str] | None:
+def _own_arguments(arguments: tuple[str | None, ...]) -> list[tuple[int, str]] | None:
     """The arguments left once the ``--ros-args ... [--]`` sections are removed (what
-    ``init_and_remove_ros_arguments`` leaves), or None when one is not known."""
-    out: list[str] = []
+    ``init_and_remove_ros_arguments`` leaves), with their indices, or None when one is not known."""
+    out: list[tuple[int, str]] = []
     in_ros = False
-    for a in arguments:
+    for i, a in enumerate(arguments):
         if a is None:
             return None
         if a == "--ros-args":
@@ -75,8 +80,17 @@ def _own_arguments(arguments: tuple[str | None, ...]) -> list[str] | None:
         elif a == "--" and in_ros:
             in_ros = False
         elif not in_ros:
-            out.append(a)
+            out.append((i, a))
     return out
+
+
+def _argument_spans(node: Any) -> list[Span | None] | None:
+    """Where each of ``node.arguments`` is written, when the launch file lists them one by one
+    (not when a string was split into several: XML ``args="..."``)."""
+    written = getattr(getattr(node, "action", None), "arguments", None)
+    if not written or len(written) != len(node.arguments):
+        return None
+    return [span_of(value) for value in written]
 
 
 def _option(args: list[str], flag: str) -> str | None | bool:

@@ -68,6 +68,7 @@ def test_bridges_in_the_graph(demo_findings: Any) -> None:
     files = {"launch/a.launch.py": LAUNCH}
     t201 = demo_findings(files, "launch/a.launch.py", "T201")
     assert [m.split(" but")[0] for _, m in t201] == ['/robot1/ros_gz_bridge subscribes to "/robot1/cmd_vel"']
+    assert [line for line, _ in t201] == [8]  # at the argument that makes the subscription
     n101 = demo_findings(files, "launch/a.launch.py", "N101")
     assert [line for line, _ in n101] == [9]  # both bridges are /robot1/ros_gz_bridge
 
@@ -85,3 +86,36 @@ def test_create_reads_param_before_topic_and_double_dash_flags() -> None:
     assert dashes is not None and [e.name for e in dashes.subscribers or []] == ["rd"]
     by_parameter = SimpleNamespace(params=(SimpleNamespace(name="topic"),))
     assert from_arguments(None, node("ros_gz_sim", "create", (), (by_parameter,))) is None
+
+
+CLOCK = """from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='ros_gz_bridge', executable='parameter_bridge', namespace='robot1', name='clock',
+             arguments=['clock@rosgraph_msgs/msg/Clock[gz.msgs.Clock']),
+        Node(package='ros_gz_bridge', executable='parameter_bridge', name='drive',
+             parameters=[{'use_sim_time': @SIM@}], remappings=[@REMAP@],
+             arguments=['/cmd_vel@geometry_msgs/msg/Twist]gz.msgs.Twist']),
+    ])
+"""
+
+
+def _clock_findings(demo_findings: Any, sim: str, remap: str = "") -> list[tuple[int, str]]:
+    text = CLOCK.replace("@SIM@", sim).replace("@REMAP@", remap)
+    return demo_findings({"launch/a.launch.py": text}, "launch/a.launch.py", "T202")
+
+
+def test_a_clock_bridged_in_a_namespace_misses_the_sim_time_clock(demo_findings: Any) -> None:
+    # rclcpp's time source subscribes to the absolute /clock when use_sim_time is true
+    ((line, message),) = _clock_findings(demo_findings, "True")
+    assert line == 8
+    assert message.startswith('/robot1/clock publishes "/robot1/clock" but nothing subscribes to it '
+                              '(did you mean "/clock", which the time source of /drive')
+
+
+def test_the_sim_time_clock_follows_the_node_s_remaps_and_its_use_sim_time(demo_findings: Any) -> None:
+    assert _clock_findings(demo_findings, "False") == []
+    assert _clock_findings(demo_findings, "True", "('/clock', '/robot1/clock')") == []

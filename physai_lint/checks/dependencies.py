@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import functools
 import posixpath
+import re
 from collections.abc import Iterator
 from typing import Any
 
@@ -11,6 +12,7 @@ from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic
 from physai_lint.model.span import Span
 from physai_lint.model.values import Command, FindPackage, PathJoin, literal_of
+from physai_lint.resolve.model import ResolvedParam, ResolvedParamDict
 
 
 def _references(ctx: CheckContext) -> Iterator[tuple[str, Span, str]]:
@@ -199,8 +201,55 @@ def missing_file(ctx: CheckContext) -> Iterator[Diagnostic]:
                 yield _file_problem(ctx, span, pkg, rel, loc, "passed in the arguments of the node",
                                     check="path", present="exists in", install="add an install rule for it "
                                     "(CMake install(DIRECTORY ...) or setup.py data_files)")
+    yield from _parameter_files(ctx, seen)
     yield from _command_files(ctx, seen)
     yield from _opened_files(ctx, seen)
+
+
+def _parameter_files(ctx: CheckContext, seen: set[tuple[object, str]]) -> Iterator[Diagnostic]:
+    """Paths into a workspace package's share directory given as parameter values (a bridge's
+    ``config_file``, a map server's ``yaml_filename``, a behavior tree's XML; list items too):
+    the node is given a path that is not there."""
+    for launch in ctx.launches:
+        for node in launch.nodes:
+            for source in node.param_sources:
+                if not isinstance(source, ResolvedParamDict):
+                    continue
+                for rp in source.params:
+                    for value, span in _path_values(rp):
+                        pkg = _share_path(ctx, value) if "/share/" in value else None
+                        if pkg is None or (span, value) in seen:
+                            continue
+                        loc = ctx.packages.locate(value)
+                        if loc.status not in ("missing", "not_installed") or \
+                                loc.status == "missing" and _names_an_output(rp.name):
+                            continue  # a file the node writes need not exist (output_log_file)
+                        seen.add((span, value))
+                        yield _file_problem(
+                            ctx, span, pkg, value.split(f"/share/{pkg}/", 1)[1], loc,
+                            f'given as parameter "{rp.name}" of {node.fqn or node.executable}',
+                            check="path", present="exists in")
+
+
+# Words of a parameter name for a file the node writes: Autoware's output_log_file, a map saver's
+# save_path, a recorder's dump_file.
+_OUTPUT_WORDS = frozenset({"output", "out", "log", "logs", "save", "saved", "write", "dump", "record",
+                           "result", "results", "export", "dest", "destination", "cache", "tmp"})
+
+
+def _names_an_output(name: str) -> bool:
+    return any(word in _OUTPUT_WORDS for word in re.split(r"[^a-z0-9]+", name.lower()))
+
+
+def _path_values(rp: ResolvedParam) -> Iterator[tuple[str, Span]]:
+    """The string values of a parameter (each item of a list) with where each is written."""
+    if isinstance(rp.value, str):
+        yield rp.value, rp.span
+    elif isinstance(rp.value, list):
+        spans = rp.item_spans if rp.item_spans and len(rp.item_spans) == len(rp.value) else None
+        for i, item in enumerate(rp.value):
+            if isinstance(item, str):
+                yield item, spans[i] if spans else rp.span
 
 
 def _file_problem(ctx: CheckContext, span: Span, pkg: str, rel: str, loc: Any, what: str,

@@ -207,9 +207,9 @@ def missing_file(ctx: CheckContext) -> Iterator[Diagnostic]:
 
 
 def _parameter_files(ctx: CheckContext, seen: set[tuple[object, str]]) -> Iterator[Diagnostic]:
-    """Paths into a workspace package's share directory given as parameter values (a bridge's
-    ``config_file``, a map server's ``yaml_filename``, a behavior tree's XML; list items too):
-    the node is given a path that is not there."""
+    """Paths into a workspace package's share directory given as parameter values in launch files
+    (a bridge's ``config_file``, a map server's ``yaml_filename``, a behavior tree's XML; list
+    items too): the node is given a path that is not there."""
     for launch in ctx.launches:
         for node in launch.nodes:
             for source in node.param_sources:
@@ -218,27 +218,41 @@ def _parameter_files(ctx: CheckContext, seen: set[tuple[object, str]]) -> Iterat
                 for rp in source.params:
                     for value, span in _path_values(rp):
                         pkg = _share_path(ctx, value) if "/share/" in value else None
-                        if pkg is None or (span, value) in seen:
+                        if pkg is None or (span, value) in seen or _PATTERN.search(value):
                             continue
                         loc = ctx.packages.locate(value)
-                        if loc.status not in ("missing", "not_installed") or \
-                                loc.status == "missing" and _names_an_output(rp.name):
-                            continue  # a file the node writes need not exist (output_log_file)
+                        rel = value.split(f"/share/{pkg}/", 1)[1]
+                        if loc.status not in ("missing", "not_installed") or loc.status == "missing" and (
+                                _names_an_output(rp.name) or _is_a_stem(ctx, pkg, rel)):
+                            continue
                         seen.add((span, value))
                         yield _file_problem(
-                            ctx, span, pkg, value.split(f"/share/{pkg}/", 1)[1], loc,
+                            ctx, span, pkg, rel, loc,
                             f'given as parameter "{rp.name}" of {node.fqn or node.executable}',
                             check="path", present="exists in")
 
 
-# Words of a parameter name for a file the node writes: Autoware's output_log_file, a map saver's
-# save_path, a recorder's dump_file.
+# A value that is no single path: a glob (config/*.yaml), a search path (models:/other)
+_PATTERN = re.compile(r"[*?\[:;]")
+# Words of a parameter name for a file the node writes, which need not exist (Autoware's
+# output_log_file, a map saver's save_path, rtabmap's database_path), unless the name says the
+# node reads it (log_config_file).
 _OUTPUT_WORDS = frozenset({"output", "out", "log", "logs", "save", "saved", "write", "dump", "record",
-                           "result", "results", "export", "dest", "destination", "cache", "tmp"})
+                           "result", "results", "export", "dest", "destination", "cache", "tmp",
+                           "database", "db"})
+_INPUT_WORDS = frozenset({"config", "conf", "cfg", "param", "params", "settings"})
 
 
 def _names_an_output(name: str) -> bool:
-    return any(word in _OUTPUT_WORDS for word in re.split(r"[^a-z0-9]+", name.lower()))
+    words = set(re.split(r"[^a-z0-9]+", re.sub(r"([a-z0-9])([A-Z])", r"\1_\2", name).lower()))
+    return bool(words & _OUTPUT_WORDS) and not words & _INPUT_WORDS
+
+
+def _is_a_stem(ctx: CheckContext, pkg: str, rel: str) -> bool:
+    """``rel`` names files by their stem (slam_toolbox's map_file_name: maps/office for
+    office.posegraph and office.data)."""
+    files = getattr(ctx.packages.workspace_package(pkg), "files", None) or ()
+    return any(f.startswith(rel + ".") for f in files)
 
 
 def _path_values(rp: ResolvedParam) -> Iterator[tuple[str, Span]]:

@@ -133,7 +133,7 @@ def concatenation(ctx: CheckContext) -> Iterator[Diagnostic]:
                      "build the value as a list of parts ([LaunchConfiguration('x'), '.yaml']) or with "
                      "PathJoinSubstitution([...])",
                 key=f"{fact.how}:{fact.detail}")
-    for span, left, right, line in once(ctx, "glued_commands", _joint):
+    for span, left, right, line in once(ctx, "glued_commands", lambda e: (e[0], _joint(e))):
         yield _glued_command(span, left, right, line)
 
 
@@ -145,26 +145,28 @@ def _glued_command(span: Span, left: str, right: str, line: str) -> Diagnostic:
     if ":=" in right:
         name = right.split(":=", 1)[0]
         what = f'"{_short(left)}" and "{_short(right)}" are the one argument "{glued}"'
-        if program in ("xacro", "xacro.py") and ":=" not in left:
+        inputs = [w for w in words[1:] if not w.startswith("-") and ":=" not in w]
+        if program in ("xacro", "xacro.py") and not inputs:
             what += ": xacro reads it as a mapping and finds no input file, so the command fails"
         else:
             what += ", where two were meant"
-        help_ = f"start the literal with a space (' {name}:=') or put ' ' between the parts"
+        help_ = f"put a space before the mapping: ' {name}:=' (or a ' ' part between the two)"
     else:
-        what = f'"{left}" and "{_short(right)}" are the one word "{glued}", a program that does not exist, so the command fails'
+        what = (f'"{left}" and "{_short(right)}" are the one word "{glued}", a program that does not '
+                "exist, so the command fails")
         help_ = f"put a space after the program: '{left} '"
     return Diagnostic(
         "L004", span,
         "Command(...) joins its parts with nothing between them and splits the result at spaces: "
         f"{what} (the command line is '{' '.join(_short(w) for w in words)}')",
-        help=help_, key=_joint((span, left, right, line))[1])
+        help=help_, key=_joint((span, left, right, line)))
 
 
-def _joint(entry: tuple[Span, str, str, str]) -> tuple[Span, str]:
-    """Which glued words are the same finding: the place and the mapping's name, or the program
+def _joint(entry: tuple[Span, str, str, str]) -> str:
+    """Which glued words at one place are the same finding: the mapping's name, or the program
     (two runs of an included file glue ``ns:=robot1`` and ``ns:=robot2`` at one place)."""
-    span, left, right, _ = entry
-    return span, right.split(":=", 1)[0] if ":=" in right else left
+    _, left, right, _ = entry
+    return right.split(":=", 1)[0] if ":=" in right else left
 
 
 def _short(text: str, most: int = 48) -> str:

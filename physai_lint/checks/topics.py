@@ -6,9 +6,17 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import Any
 
+from physai_lint.checks._params import effective
 from physai_lint.checks._util import all_nodes, line_ref, run_memo, where
 from physai_lint.checks.base import CheckContext, rule
-from physai_lint.graph.system import Endpoint, SystemGraph, build_graph, remap_target, similar
+from physai_lint.graph.system import (
+    Endpoint,
+    SystemGraph,
+    apply_remaps,
+    build_graph,
+    remap_target,
+    similar,
+)
 from physai_lint.interfaces.model import LIFECYCLE_ENDPOINTS
 from physai_lint.model.findings import Diagnostic, Related
 from physai_lint.model.values import literal_of, span_of
@@ -484,9 +492,6 @@ def _sim_time_clocks(ctx: CheckContext, g: SystemGraph) -> Iterator[tuple[str, s
     ``TimeSource::NodeState::create_clock_sub``, rclpy ``TimeSource._subscribe_to_clock_topic``),
     which the node's remap rules apply to like any name. No interface lists it: the node's code
     never names it."""
-    from physai_lint.checks._params import effective
-    from physai_lint.graph.system import apply_remaps
-
     for node in g.launch.nodes:
         if node.id not in g.known or node.id in g.rejected:
             continue

@@ -85,8 +85,8 @@ def _own_arguments(arguments: tuple[str | None, ...]) -> list[tuple[int, str]] |
 
 
 def _argument_spans(node: Any) -> list[Span | None] | None:
-    """Where each of ``node.arguments`` is written, when the launch file lists them one by one
-    (not when a string was split into several: XML ``args="..."``)."""
+    """Where each of ``node.arguments`` is written, when the launch file's arguments match them
+    one to one (XML ``args="a b"`` gives one per word); None otherwise."""
     written = getattr(getattr(node, "action", None), "arguments", None)
     if not written or len(written) != len(node.arguments):
         return None

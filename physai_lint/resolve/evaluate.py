@@ -309,12 +309,12 @@ def glued_words(command: v.Value, texts: list[str]) -> list[tuple[Span | None, s
     """Where ``Command([...])`` (``$(command ...)``) runs two words together: launch concatenates
     the parts' values with nothing between them and splits the result with ``shlex``
     (``Command.perform``), so a missing space joins what the parts' kinds say are separate words.
-    ``texts``: each part's value. (span of the right part, or None, the word's text before the
-    joint, its text after) for a substitution followed by ``name:=...`` (``'xacro ', file,
-    'ns:=', ns``: the file and the mapping are one word), and for a program name followed by a
-    substitution giving an absolute path (``'xacro', file``: the program ``xacro/opt/...``).
-    Empty parts are skipped (the word before them is the one joined); two literals are never
-    judged: they are written side by side on purpose."""
+    ``texts``: each part's value. (span of the part inside the command: the literal, or None;
+    the word's text before the joint; its text after) for a path or a mapping's value followed
+    by a ``name:=...`` literal (``'xacro ', file, 'ns:=', ns``: the file and the mapping are one
+    word), and for the program followed by a substitution giving an absolute path (``'xacro',
+    file``: the program ``xacro/opt/...``). Empty parts are skipped (the word before them is the
+    one joined); two literals are never judged: they are written side by side on purpose."""
     line = "".join(texts)
     found: list[tuple[Span | None, str, str]] = []
     prev: int | None = None
@@ -325,18 +325,24 @@ def glued_words(command: v.Value, texts: list[str]) -> list[tuple[Span | None, s
             continue
         if prev is not None and not texts[prev][-1].isspace() and not text[0].isspace():
             left, right = command[prev], command[i]
-            before, after = line[:start].split()[-1], line[start:].split()[0]
-            if _joins_two_words(left, right, before, after):
-                found.append((right.span or left.span, before, after))
+            words_before = line[:start].split()
+            after = line[start:].split()[0]
+            if _joins_two_words(left, right, words_before, after):
+                found.append(((right if isinstance(right, v.Text) else left).span, words_before[-1], after))
         prev = i
     return found
 
 
-def _joins_two_words(left: v.Subst, right: v.Subst, before: str, after: str) -> bool:
+def _joins_two_words(left: v.Subst, right: v.Subst, words_before: list[str], after: str) -> bool:
     """Whether parts ``left`` and ``right``, written with no space between them, make the one
-    word ``before + after`` of two the author meant (``glued_words``)."""
-    if isinstance(right, v.Text):  # a mapping literal right after a substitution
-        return not isinstance(left, v.Text) and _MAPPING_START.match(after) is not None
-    # a program (written, or FindExecutable) right before a substitution's absolute path
+    word ``words_before[-1] + after`` of two the author meant (``glued_words``)."""
+    before = words_before[-1]
+    if isinstance(right, v.Text):
+        # a mapping literal right after a substitution ending a path or a mapping's value (not
+        # the start of a mapping's name: ' ', side, '_arm:=true' is one word on purpose)
+        return not isinstance(left, v.Text) and _MAPPING_START.match(after) is not None and \
+            ("/" in before or ":=" in before)
+    # the program (written, or FindExecutable) right before a substitution's absolute path (an
+    # option is not: ``-p/path`` is the option's value)
     return isinstance(left, (v.Text, v.FindExecutable)) and not isinstance(right, v.FindExecutable) \
-        and after.startswith("/") and _PROGRAM_WORD.fullmatch(before) is not None
+        and after.startswith("/") and len(words_before) == 1 and _PROGRAM_WORD.fullmatch(before) is not None

@@ -46,7 +46,10 @@ def test_a_value_followed_by_the_next_mapping(demo_findings):
 
 
 def test_a_program_followed_by_a_path(demo_findings):
-    ((_, message),) = _found(demo_findings, "Command(['xacro', urdf])")
+    # at the program's literal, inside each Command (not where the path was built)
+    found = _found(demo_findings, "Command(['xacro', urdf])", "Command(['xacro', urdf])")
+    assert [line for line, _ in found] == [16, 17]
+    message = found[0][1]
     assert '"xacro" and ".../' in message and 'are the one word "xacro/.../' in message
     assert "/urdf/bot.urdf.xacro" in message
     assert "a program that does not exist" in message
@@ -97,6 +100,9 @@ def test_words_written_apart_or_meant_together_are_not_reported(demo_findings):
         "Command(['ros2 run demo tool --ros-args -r __ns:=/', ns])",
         "Command(['xacro ', urdf, ' namespace:=', ns, ' ', extra, 'a:=b'])",  # extra is '' here
         "Command(['xacro ', urdf, ' namespace:=', LaunchConfiguration('unknown')])",
+        "Command(['xacro ', urdf, ' ', ns, '_arm:=true'])",  # a mapping's name built from a value
+        "Command(['gz sdf -p', urdf])",  # an option glued to its value
+        "Command(['xacro -o', urdf])",
     ) == []
 
 

@@ -179,25 +179,30 @@ def _share_path(ctx: CheckContext, arg: str) -> str | None:
     return name
 
 
+def _unfound_share_file(ctx: CheckContext, path: str) -> tuple[str, str, Any] | None:
+    """(package, the path inside its share directory, ``locate``'s answer) of ``path`` in a
+    workspace package's share directory when its file is missing or not installed; else None."""
+    pkg = _share_path(ctx, path) if "/share/" in path else None
+    if pkg is None:
+        return None
+    loc = ctx.packages.locate(path)
+    if loc.status not in ("missing", "not_installed"):
+        return None
+    return pkg, path.split(f"/share/{pkg}/", 1)[1], loc
+
+
 @rule("U104", "missing-file")
 def missing_file(ctx: CheckContext) -> Iterator[Diagnostic]:
     seen: set[tuple[object, str]] = set()
     for launch in ctx.launches:
         for node in launch.nodes:
             for arg in node.arguments:
-                if not arg or "/share/" not in arg:
-                    continue
-                pkg = _share_path(ctx, arg)
-                if pkg is None:
-                    continue
-                loc = ctx.packages.locate(arg)
-                if loc.status not in ("missing", "not_installed"):
-                    continue
+                found = _unfound_share_file(ctx, arg) if arg else None
                 span = node.spans.get("arguments", node.span)
-                if (span, arg) in seen:
+                if found is None or (span, arg) in seen:
                     continue
                 seen.add((span, arg))
-                rel = arg.split(f"/share/{pkg}/", 1)[1]
+                pkg, rel, loc = found
                 yield _file_problem(ctx, span, pkg, rel, loc, "passed in the arguments of the node",
                                     check="path", present="exists in", install="add an install rule for it "
                                     "(CMake install(DIRECTORY ...) or setup.py data_files)")
@@ -217,14 +222,12 @@ def _parameter_files(ctx: CheckContext, seen: set[tuple[object, str]]) -> Iterat
                     continue
                 for rp in source.params:
                     for value, span in _path_values(rp):
-                        pkg = _share_path(ctx, value) if "/share/" in value else None
-                        if pkg is None or (span, value) in seen or _PATTERN.search(value):
+                        found = _unfound_share_file(ctx, value)
+                        if found is None or (span, value) in seen or _PATTERN.search(value):
                             continue
-                        loc = ctx.packages.locate(value)
-                        rel = value.split(f"/share/{pkg}/", 1)[1]
-                        if loc.status not in ("missing", "not_installed") or loc.status == "missing" and (
-                                _names_an_output(rp.name) or _is_a_stem(ctx, pkg, rel)):
-                            continue
+                        pkg, rel, loc = found
+                        if loc.status == "missing" and (_names_an_output(rp.name) or _is_a_stem(ctx, pkg, rel)):
+                            continue  # a file the node writes need not exist (output_log_file)
                         seen.add((span, value))
                         yield _file_problem(
                             ctx, span, pkg, rel, loc,
@@ -296,16 +299,14 @@ def _opened_files(ctx: CheckContext, seen: set[tuple[object, str]]) -> Iterator[
     ``Path(path).read_text()``), in a workspace package's share directory."""
     for launch in ctx.launches:
         for path, span in launch.opened_files:
-            pkg = _share_path(ctx, path)
-            if pkg is None or (span, path) in seen:
-                continue
-            loc = ctx.packages.locate(path)
-            if loc.status not in ("missing", "not_installed"):
+            found = _unfound_share_file(ctx, path)
+            if found is None or (span, path) in seen:
                 continue
             seen.add((span, path))
+            pkg, rel, loc = found
             fails = "; launch fails with FileNotFoundError"
-            yield _file_problem(ctx, span, pkg, path.split(f"/share/{pkg}/", 1)[1], loc,
-                                "opened while the launch description is built", fails, fails)
+            yield _file_problem(ctx, span, pkg, rel, loc, "opened while the launch description is built",
+                                fails, fails)
 
 
 def _known_share_path(ctx: CheckContext, join: PathJoin) -> tuple[str, str] | None:

@@ -133,7 +133,7 @@ def concatenation(ctx: CheckContext) -> Iterator[Diagnostic]:
                      "build the value as a list of parts ([LaunchConfiguration('x'), '.yaml']) or with "
                      "PathJoinSubstitution([...])",
                 key=f"{fact.how}:{fact.detail}")
-    for span, left, right, line in once(ctx, "glued_commands", lambda e: (e[0], _joint(e))):
+    for span, left, right, line in once(ctx, "glued_commands", lambda e: (e[0], _joint(e[1], e[2]))):
         yield _glued_command(span, left, right, line)
 
 
@@ -159,13 +159,12 @@ def _glued_command(span: Span, left: str, right: str, line: str) -> Diagnostic:
         "L004", span,
         "Command(...) joins its parts with nothing between them and splits the result at spaces: "
         f"{what} (the command line is '{' '.join(_short(w) for w in words)}')",
-        help=help_, key=_joint((span, left, right, line)))
+        help=help_, key=_joint(left, right))
 
 
-def _joint(entry: tuple[Span, str, str, str]) -> str:
+def _joint(left: str, right: str) -> str:
     """Which glued words at one place are the same finding: the mapping's name, or the program
     (two runs of an included file glue ``ns:=robot1`` and ``ns:=robot2`` at one place)."""
-    _, left, right, _ = entry
     return right.split(":=", 1)[0] if ":=" in right else left
 
 

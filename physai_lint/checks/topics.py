@@ -6,7 +6,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import Any
 
-from physai_lint.checks._params import effective
+from physai_lint.checks._params import effective, fully_known, interface
 from physai_lint.checks._util import all_nodes, line_ref, run_memo, where
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.graph.system import (
@@ -413,10 +413,10 @@ def _dangling(ctx: CheckContext, mine: str, other: str, code: str) -> Iterator[D
                 types.setdefault(o.resolved, set()).add(o.type)
         clocks: dict[str, list[str]] = {}  # topic -> the nodes whose sim time reads it
         if other == "subscriber":
-            for node_id, topic in _sim_time_clocks(ctx, g):
-                by_topic.setdefault(topic, set()).add(node_id)
+            for node, topic in _sim_time_clocks(ctx, g):
+                by_topic.setdefault(topic, set()).add(node.id)
                 types.setdefault(topic, set()).add(CLOCK_TYPE)
-                clocks.setdefault(topic, []).append(g.node(node_id).fqn or node_id)
+                clocks.setdefault(topic, []).append(node.fqn or node.id)
         others = set(by_topic)
         # T202's near miss has subscribers and no publisher (a topic somebody publishes, under its
         # name or one known only at run time, is connected already)
@@ -486,8 +486,8 @@ def _clock_readers(nodes: list[str] | None) -> str:
     return f", which the time source of {shown} (use_sim_time true) subscribes to"
 
 
-def _sim_time_clocks(ctx: CheckContext, g: SystemGraph) -> Iterator[tuple[str, str]]:
-    """(node id, topic) of the clock subscription of each node whose use_sim_time is certainly
+def _sim_time_clocks(ctx: CheckContext, g: SystemGraph) -> Iterator[tuple[NodeInstance, str]]:
+    """(node, topic) of the clock subscription of each node whose use_sim_time is certainly
     true: rclcpp's and rclpy's time source subscribe to the absolute "/clock" then (rclcpp
     ``TimeSource::NodeState::create_clock_sub``, rclpy ``TimeSource._subscribe_to_clock_topic``),
     which the node's remap rules apply to like any name. No interface lists it: the node's code
@@ -499,7 +499,7 @@ def _sim_time_clocks(ctx: CheckContext, g: SystemGraph) -> Iterator[tuple[str, s
         if ep is not None and ep.certain and ep.value is True:
             topic, _ = apply_remaps("/clock", node)
             if topic is not None:
-                yield node.id, topic
+                yield node, topic
 
 
 def _sibling_copy(name: str, candidate: str, namespaces: set[str]) -> bool:
@@ -520,8 +520,6 @@ def _exists(ctx: CheckContext, g: SystemGraph, e: Endpoint) -> bool | None:
     """Whether the node has ``e``, which exists only under some parameter values (``e.when``):
     each parameter's effective value, else its declared default once every parameter source of
     the node is known. None when that cannot be told."""
-    from physai_lint.checks._params import effective, fully_known, interface
-
     node = g.node(e.node)
     params = effective(ctx, node)
     decls = getattr(interface(ctx, node), "parameters", None) or {}

@@ -215,6 +215,27 @@ def call_argument_mismatch(ctx: CheckContext) -> Iterator[Diagnostic]:
                 key=fact.detail)
 
 
+@rule("L013", "late-bound-variable")
+def late_bound_variable(ctx: CheckContext) -> Iterator[Diagnostic]:
+    """A function launch calls later (an OpaqueFunction's, an event handler's) reading a variable
+    that the enclosing function rebinds after making it: Python looks the variable up when the body
+    runs, after ``generate_launch_description`` has returned (``calls.late_bindings``)."""
+    for _path, facts in python_facts(ctx):
+        for f in facts.late_bound:
+            values = f" is {f.now} by then, not {f.made} as when the function was made" \
+                if f.made and f.now else " has another value by then than when the function was made"
+            when = "runs the OpaqueFunction" if f.caller == "OpaqueFunction" else f"runs the {f.caller} handler"
+            yield Diagnostic(
+                "L013", f.span,
+                f'this function reads "{f.name}" when launch {when}, after generate_launch_description '
+                f"has returned: {f.name}{values} (a Python closure reads the variable, not its value; "
+                "every function made in a loop sees the last one)",
+                help=f"bind the value when the function is made: a default argument (lambda context, "
+                     f"{f.name}={f.name}: ...), OpaqueFunction(function=..., kwargs={{'{f.name}': "
+                     f"{f.name}}}) or functools.partial",
+                key=f.name)
+
+
 @rule("L008", "wrong-argument-type")
 def wrong_argument_type(ctx: CheckContext) -> Iterator[Diagnostic]:
     for _path, facts in python_facts(ctx):

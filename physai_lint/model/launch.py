@@ -379,6 +379,20 @@ class ConcatFact:
     detail: str
 
 
+@dataclass(frozen=True, slots=True)
+class LateFact:
+    """A function launch calls later (``caller``: "OpaqueFunction", or the event handler's class)
+    whose body reads ``name``, a variable of an enclosing function that was rebound after the
+    function was made (a loop moved on): the body sees ``now``, not ``made`` (reprs, or "" when not
+    a plain value). ``span``: the ``lambda`` or ``def``."""
+
+    caller: str
+    name: str
+    made: str
+    now: str
+    span: Span
+
+
 # In ``PythonFacts.escaped``: the whole ``context.launch_configurations`` mapping was read
 # (iterated, copied, handed on, indexed by an unknown name), so every configuration may be.
 EVERY_CONFIGURATION = "*"
@@ -418,6 +432,8 @@ class PythonFacts:
     # directory), with the call's span; guarded as ``lookups`` are. A missing one raises
     # FileNotFoundError there.
     opens: tuple[tuple[Value, Span], ...] = ()
+    # Functions launch calls later that read a variable rebound since they were made (LateFact).
+    late_bound: tuple[LateFact, ...] = ()
 
 
 @dataclass(frozen=True, slots=True)

@@ -27,7 +27,7 @@ from physai_lint.model.span import Span
 from physai_lint.pyast import ast_nodes
 
 from . import convert_values
-from .calls import call_user
+from .calls import call_user, late_bindings
 from .convert_actions import ActionBuilder
 from .core import Signal
 from .evaluator import Abort, Evaluator
@@ -101,6 +101,7 @@ def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | N
             given = [Opaque(f"{a.arg}, given by launch_testing", gld_span) for a in required] if has_gtd else []
             try:
                 result = call_user(ev, gld, [*bound[0], *given], dict(bound[1]), gld_span)
+                late_bindings(ev)  # what launch calls later sees the variables as they are now
             except RecursionError:
                 result = Opaque("the file is too deeply nested to evaluate", gld_span)
             if has_gtd and isinstance(result, tuple) and len(result) == 2:
@@ -146,7 +147,8 @@ def parse_python_launch(path: str, text: str, read_file: Callable[[str], str | N
     tested = tuple(sorted(ev.tests.values(), key=lambda c: (c.span.line, c.span.col, c.how)))
     refused = tuple(sorted(ev.call_errors.values(), key=lambda c: (c.span.line, c.span.col)))
     facts = PythonFacts(calls, names, concats, has_gld, is_test, wrong, tuple(sorted(ev.escaped)), tested,
-                        refused, tuple(ev.lookups), imports, tuple(ev.opens))
+                        refused, tuple(ev.lookups), imports, tuple(ev.opens),
+                        tuple(sorted(ev.late_bound.values(), key=lambda f: (f.span.line, f.span.col, f.name))))
     launch = LaunchFile(path, "python", actions, python=facts, read_files=tuple(ev.read_files))
     convert_values.set_recorder(None)
     return FrontendResult(launch=launch, diagnostics=[])

@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING, Any
 
 import yaml
 
-from physai_lint.model.launch import EVERY_CONFIGURATION, ConcatFact
+from physai_lint.model.launch import EVERY_CONFIGURATION, ConcatFact, LateFact
 from physai_lint.model.span import Span
 from physai_lint.model.values import FindPackage, LaunchConfig, StrMethod, Text, Unknown, Value
 
@@ -635,30 +635,38 @@ def make_lobj(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any],
         if isinstance(fn, Partial):
             fn, bound = fn.func, (fn.args, fn.kwargs)
         if isinstance(fn, UserFunc) and isinstance(fargs, (list, tuple)) and isinstance(fkwargs, dict):
-            start, peeks, undecided, sets = len(ev.performed), len(ev.peeked), ev.undecided, len(ev.config_sets)
-            ev.guarded += 1  # the body runs when launch executes the action, if it does
-            try:
-                obj.extra["result"] = call_user(ev, fn, [*bound[0], ContextSym(), *fargs],
-                                                {**bound[1], **fkwargs}, span)
-            finally:
-                ev.guarded -= 1
-            obj.extra["performed"] = tuple(ev.performed[start:])
-            obj.extra["peeked"] = tuple(ev.peeked[peeks:])
-            obj.extra["undecided"] = ev.undecided > undecided
-            obj.extra["sets"] = tuple(ev.config_sets[sets:])
+            def run_opaque(fn: UserFunc = fn) -> None:
+                start, peeks, undecided, sets = len(ev.performed), len(ev.peeked), ev.undecided, len(ev.config_sets)
+                ev.guarded += 1  # the body runs when launch executes the action, if it does
+                try:
+                    obj.extra["result"] = call_user(ev, fn, [*bound[0], ContextSym(), *fargs],
+                                                    {**bound[1], **fkwargs}, span)
+                finally:
+                    ev.guarded -= 1
+                obj.extra["performed"] = tuple(ev.performed[start:])
+                obj.extra["peeked"] = tuple(ev.peeked[peeks:])
+                obj.extra["undecided"] = ev.undecided > undecided
+                obj.extra["sets"] = tuple(ev.config_sets[sets:])
+
+            run_opaque()
+            _bind_late(ev, obj, fn, run_opaque)
         else:
             obj.extra["result"] = Opaque("OpaqueFunction with a function that cannot be evaluated statically", span)
     elif short in _HANDLER_KEYS:
         for key in _HANDLER_KEYS[short]:
             fn = kwargs.get(key)
             if isinstance(fn, UserFunc):
-                nargs = len(fn.node.args.posonlyargs) + len(fn.node.args.args)
-                fake = [Opaque("the event is known only at launch time", span), ContextSym()][:nargs]
-                ev.guarded += 1
-                try:
-                    obj.extra["entities_result"] = call_user(ev, fn, fake, {}, span)
-                finally:
-                    ev.guarded -= 1
+                def run_handler(fn: UserFunc = fn) -> None:
+                    nargs = len(fn.node.args.posonlyargs) + len(fn.node.args.args)
+                    fake = [Opaque("the event is known only at launch time", span), ContextSym()][:nargs]
+                    ev.guarded += 1
+                    try:
+                        obj.extra["entities_result"] = call_user(ev, fn, fake, {}, span)
+                    finally:
+                        ev.guarded -= 1
+
+                run_handler()
+                _bind_late(ev, obj, fn, run_handler)
                 break
     ev.objects.append(obj)
     return obj
@@ -672,3 +680,83 @@ _HANDLER_KEYS = {
     "ExecuteProcess": ("on_exit",), "Node": ("on_exit",), "LifecycleNode": ("on_exit",),
     "ComposableNodeContainer": ("on_exit",),
 }
+
+
+def _bind_late(ev: Evaluator, obj: LObj, fn: UserFunc, run: Any) -> None:
+    """Note a function that launch calls later (an OpaqueFunction's, an event handler's) and whose
+    body reads variables of an enclosing function (``late_calls``). Python looks those up when the
+    body runs, not when the function is made: after ``generate_launch_description`` has returned.
+    So ``for robot in robots: OpaqueFunction(function=lambda context: setup(context, robot))``
+    runs every function with the last robot; ``late_bindings`` runs the body again then."""
+    if fn.closure is None or fn.closure.parent is None:  # defined at module level
+        return
+    names = _enclosing_reads(fn)
+    if names:
+        ev.late_calls.append((obj, fn, names, run))
+
+
+def _enclosing_reads(fn: UserFunc, depth: int = 0) -> list[tuple[Any, str, Any]]:
+    """(scope, name, value now) for each variable of an enclosing function scope that ``fn``'s body
+    reads, also through the nested functions it reads (two levels). A name the body reads that no
+    enclosing function binds yet is noted as ``_UNBOUND`` in each of them (it may be assigned later,
+    after the function was made, and launch then sees it). Names the body binds itself are its own."""
+    node = fn.node
+    own = {p.arg for p in [*node.args.posonlyargs, *node.args.args, *node.args.kwonlyargs]}
+    own.update(p.arg for p in (node.args.vararg, node.args.kwarg) if p is not None)
+    body = [node.body] if isinstance(node, ast.Lambda) else node.body
+    names = [n for part in body for n in ast.walk(part) if isinstance(n, ast.Name)]
+    own.update(n.id for n in names if not isinstance(n.ctx, ast.Load))
+    out: list[tuple[Any, str, Any]] = []
+    for name in sorted({n.id for n in names} - own):
+        scope, chain = fn.closure, []
+        while scope is not None and scope.parent is not None:  # not the module's scope
+            if name in scope.vars:
+                value = scope.vars[name]
+                out.append((scope, name, value))
+                if isinstance(value, UserFunc) and value is not fn and depth < 2:
+                    out.extend(_enclosing_reads(value, depth + 1))
+                break
+            chain.append(scope)
+            scope = scope.parent
+        else:
+            out.extend((s, name, _UNBOUND) for s in chain)
+    return out
+
+
+_UNBOUND = object()
+
+
+def _plain_repr(value: Any) -> str:
+    """``repr`` of a plain value (a string, a number, a bool, None) for a message, shortened; ""
+    for any other value."""
+    if value is None or isinstance(value, (str, int, float, bool)):
+        text = repr(str(value) if isinstance(value, str) else value)  # a literal keeps its span (SStr)
+        return text if len(text) <= 40 else text[:37] + "..."
+    return ""
+
+
+def late_bindings(ev: Evaluator) -> None:
+    """Run again the functions ``_bind_late`` noted whose enclosing variables have been rebound since
+    they were made (a loop moved on): launch calls them after ``generate_launch_description`` has
+    returned, with the variables as they are then. A function run again may note others."""
+    for _ in range(4):
+        pending, ev.late_calls = ev.late_calls, []
+        for obj, fn, names, run in pending:
+            moved = [(name, value, scope.vars.get(name, _UNBOUND)) for scope, name, value in names
+                     if scope.vars.get(name, _UNBOUND) is not value]
+            if moved:
+                span = fn.module.spans.of(fn.node) if fn.module is not None else obj.span
+                caller = api.short(obj.qual)
+                for name, made, now in moved:
+                    # a variable assigned only after the function was made, or a function redefined,
+                    # is how the file means it
+                    if made is not _UNBOUND and not isinstance(made, (UserFunc, Partial)):
+                        ev.late_bound.setdefault((span, name), LateFact(
+                            caller, name, _plain_repr(made), _plain_repr(now), span))
+                saved, ev.cond_stack = ev.cond_stack, list(obj.tags)
+                try:
+                    run()
+                finally:
+                    ev.cond_stack = saved
+        if not ev.late_calls:
+            return

@@ -6,7 +6,7 @@ import ast
 import os
 from typing import Any
 
-from physai_lint.model.launch import EVERY_CONFIGURATION, ConcatFact, TypeFact
+from physai_lint.model.launch import EVERY_CONFIGURATION, ConcatFact, LateFact, TypeFact
 from physai_lint.model.span import Span
 from physai_lint.model.values import BoolOp, Compare, FindPackage, IfElse, PathJoin, Value
 
@@ -54,6 +54,10 @@ class Recorder:
         self.lookups: list[Value] = []
         self.opens: list[tuple[Value, Span]] = []
         self.guarded = 0
+        # Functions launch calls later whose bodies read variables of an enclosing function
+        # (``calls.late_bindings``): (the action, (scope, name, value when made), run again).
+        self.late_calls: list[tuple[LObj, Any, list[tuple[Any, str, Any]], Any]] = []
+        self.late_bound: dict[tuple[Span, str], LateFact] = {}
 
     def lookup(self, found: FindPackage) -> None:
         if not self.guarded and not getattr(self, "cond_stack", None):

@@ -248,8 +248,8 @@ SHARED_MEMOS: tuple[tuple[int, tuple[str, ...]], ...] = (
     (45, ("L114", "U104")),  # every model object of each launch file (checks._util.ir_objects)
 )
 # Rules that ask those memos about a few nodes only (lifecycle and controller managers, the target of a
-# "ros2 param" command): they compute these few wherever they run.
-LIGHT_MEMO_USERS = frozenset({"P110", "S101", "S104", "S201", "S202", "S204"})
+# "ros2 param" command, the targets of OnProcessExit handlers): they compute these few wherever they run.
+LIGHT_MEMO_USERS = frozenset({"P110", "S101", "S104", "S106", "S201", "S202", "S204"})
 
 # A static cost per rule: about its milliseconds on the real-workspace benchmark (1,180 files,
 # interfaces prefetched, medians of four -j2 runs; S101 imports networkx only for a launch whose

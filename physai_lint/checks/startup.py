@@ -1,11 +1,11 @@
 """Startup order: S101 startup-cycle, S102 handler-never-fires, S103 invalid-timer-period,
-S104 process-run-twice, S105 process-started-at-shutdown."""
+S104 process-run-twice, S105 process-started-at-shutdown, S106 exit-of-long-running-node."""
 from __future__ import annotations
 
 import math
 from collections.abc import Iterator
 
-from physai_lint.checks._params import effective
+from physai_lint.checks._params import effective, interface
 from physai_lint.checks._util import ACTION_CLASSES, command_words, once
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic, Related
@@ -145,6 +145,65 @@ def process_started_at_shutdown(ctx: CheckContext) -> Iterator[Diagnostic]:
                      "Shutdown action / EmitEvent(event=Shutdown()) instead of Ctrl-C",
                 related=(Related(node.span, "the action"),) if handler is not None and handler != node.span else (),
                 key=node.action_id)
+
+
+@rule("S106", "exit-of-long-running-node")
+def exit_of_long_running_node(ctx: CheckContext) -> Iterator[Diagnostic]:
+    """An OnProcessExit handler that starts processes when a node exits that runs until the launch
+    shuts down: they start only if it crashes (then launch is not shutting down), never in normal
+    operation, and not on Ctrl-C either (``ExecuteLocal.execute`` starts nothing once launch is
+    shutting down). Usually meant: OnProcessStart."""
+    seen: set[object] = set()
+    for launch in ctx.launches:
+        if not launch.edges:
+            continue
+        nodes = {n.id: n for n in launch.nodes}
+        started: dict[tuple[str, object], list[NodeInstance]] = {}
+        for edge in launch.edges:
+            if edge.reason != "on_process_exit":
+                continue
+            before, after = nodes.get(edge.before), nodes.get(edge.after)
+            if before is None or after is None or before.active is False or after.active is False:
+                continue
+            started.setdefault((edge.before, edge.span), []).append(after)
+        for (before_id, span), afters in started.items():
+            before = nodes[before_id]
+            why = _runs_until_shutdown(ctx, before)
+            if why is None or (span, before.span) in seen:
+                continue
+            seen.add((span, before.span))
+            names = sorted({_label(a) for a in afters})
+            what = names[0] if len(names) == 1 else ", ".join(names[:3]) + (" ..." if len(names) > 3 else "")
+            yield Diagnostic(
+                "S106", span,
+                f"this OnProcessExit handler starts {what} when {_label(before)} exits, but that node runs "
+                f"until the launch shuts down ({why}), and launch starts nothing once it is shutting down "
+                "(ExecuteLocal.execute): the handler's processes start only if the node crashes",
+                help="to start them once the node is up, use OnProcessStart (or a TimerAction); keep "
+                     "OnProcessExit for processes that end by themselves (spawners, one-shot scripts)",
+                related=(Related(before.span, "the long-running node"),) if before.span != span else (),
+                key=f"{before.action_id}")
+
+
+def _runs_until_shutdown(ctx: CheckContext, node: NodeInstance) -> str | None:
+    """Why ``node`` serves until shutdown, or None when it may end by itself: a container, a
+    lifecycle node, a node whose code offers services or actions, or a bundled node (those are
+    servers, drivers and publishers, not one-shot tools) that both subscribes and publishes."""
+    if node.kind == "container":
+        return "a component container"
+    if node.kind == "lifecycle_node":
+        return "a lifecycle node"
+    iface = interface(ctx, node) if node.kind == "node" else None
+    if iface is None:
+        return None
+    if iface.lifecycle:
+        return "its code makes a lifecycle node"
+    for kind, noun in (("services", "services"), ("action_servers", "actions")):
+        if iface.endpoints(kind) or any(k == kind for k, _ in iface.unnamed):
+            return f"it offers {noun}: {iface.source}" if iface.source else f"it offers {noun}"
+    if iface.source.startswith("bundled") and iface.endpoints("subscribers") and iface.endpoints("publishers"):
+        return f"it subscribes and publishes: {iface.source}"
+    return None
 
 
 def _label(node: NodeInstance) -> str:

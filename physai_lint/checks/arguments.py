@@ -35,14 +35,24 @@ def undefined_configuration(ctx: CheckContext) -> Iterator[Diagnostic]:
                 hint = ("TimerAction._wait_to_fire_event performs it once the whole launch description "
                         "has been visited, with the configurations left at the top level: a group or "
                         "include scope that declared or set it has ended by then")
+            # a LaunchConfiguration made elsewhere (a Python variable): reported where it is used
+            site = read.site if read.site is not None and read.site.file == read.span.file \
+                and read.span.file.endswith(".py") and not _within(read.span, read.site) else None
             yield Diagnostic(
-                "L101", read.span,
+                "L101", site or read.span,
                 f'launch configuration "{read.name}" {lead}'
                 + (f"; {hint}" if hint else "")
                 + f'; launch fails with "launch configuration \'{read.name}\' does not exist"',
                 help=f'declare it with DeclareLaunchArgument("{read.name}", default_value=...) / '
                      f'<arg name="{read.name}" default="..."/>, or give LaunchConfiguration a default',
+                related=(Related(read.span, "the LaunchConfiguration"),) if site is not None else (),
                 key=read.name)
+
+
+def _within(inner: Any, outer: Any) -> bool:
+    """``inner`` lies within ``outer`` (same file)."""
+    return (outer.line, outer.col) <= (inner.line, inner.col) and \
+        (inner.end_line, inner.end_col) <= (outer.end_line, outer.end_col)
 
 
 # Configurations launch itself reads for every process it executes: ExecuteLocal's 'emulate_tty'

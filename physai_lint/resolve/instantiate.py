@@ -129,6 +129,7 @@ class Instantiator:
         self.first_pass: set[str] = set()
         self.deferred_visits: set[str] = set()
         self.read_note = ""  # what ConfigReads made now are (``ConfigRead.note``)
+        self.read_site: Span | None = None  # the condition or action being evaluated (``ConfigRead.site``)
         self.triggered: dict[str, tuple[ir.Action, list[tuple[tuple[str, str, Span], ...]]]] = {}
         # lifecycle node action key -> (key, span) of the EmitEvent(ChangeState) actions naming it
         self.change_requests: dict[str, list[tuple[str, Span]]] = {}
@@ -146,7 +147,7 @@ class Instantiator:
         # after an action or include the linter cannot follow, "nothing set it" is not known
         defined = defined or self.frame.file in self.configs_open
         self.result.config_reads.append(ConfigRead(name, span, defined, has_default, self.frame.active,
-                                                   self.read_note))
+                                                   self.read_note, self.read_site))
         for arg in self.declared_by_name.get(name, ()):
             arg.reads += 1
 
@@ -235,10 +236,13 @@ class Instantiator:
             self._visit(action, scope)
 
     def _visit(self, a: ir.Action, scope: Scope) -> None:
-        outer = self.frame
+        outer, outer_site = self.frame, self.read_site
         active = outer.active
         if a.condition is not None:
+            self.read_site = a.condition.span
             active = combine(active, self.ev.condition(a.condition.kind, a.condition.value, scope, a.condition.span))
+        # what an OpaqueFunction's body performs is read there, not where the action is
+        self.read_site = None if isinstance(a, ir.OpaqueAction) else a.span
         # Frames are never mutated: an action that changes nothing keeps its parent's frame (most
         # do; a dataclasses.replace per action was a tenth of resolving a large workspace).
         self.frame = outer if active is outer.active else replace(outer, active=active)
@@ -268,7 +272,7 @@ class Instantiator:
             else:
                 self._dispatch(a, scope)
         finally:
-            self.frame = outer
+            self.frame, self.read_site = outer, outer_site
 
     def _dispatch(self, a: ir.Action, scope: Scope) -> None:
         if isinstance(a, ir.DeclareArgument):

@@ -150,6 +150,9 @@ class ConfigRead:
     has_default: bool
     active: Activity = True
     note: str = ""  # "timer period": read when a TimerAction performs its period, after the pass
+    # the condition or action whose evaluation made the read: where a LaunchConfiguration made
+    # elsewhere (a Python variable) is used
+    site: Span | None = None
 
 
 @dataclass

@@ -35,7 +35,7 @@ def undefined_configuration(ctx: CheckContext) -> Iterator[Diagnostic]:
                 hint = ("TimerAction._wait_to_fire_event performs it once the whole launch description "
                         "has been visited, with the configurations left at the top level: a group or "
                         "include scope that declared or set it has ended by then")
-            # a LaunchConfiguration made elsewhere (a Python variable): reported where it is used
+            # a LaunchConfiguration made elsewhere (a Python variable): reported at the condition
             site = read.site if read.site is not None and read.site.file == read.span.file \
                 and read.span.file.endswith(".py") and not _within(read.span, read.site) else None
             yield Diagnostic(

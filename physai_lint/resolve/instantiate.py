@@ -129,7 +129,7 @@ class Instantiator:
         self.first_pass: set[str] = set()
         self.deferred_visits: set[str] = set()
         self.read_note = ""  # what ConfigReads made now are (``ConfigRead.note``)
-        self.read_site: Span | None = None  # the condition or action being evaluated (``ConfigRead.site``)
+        self.read_site: Span | None = None  # the condition being evaluated (``ConfigRead.site``)
         self.triggered: dict[str, tuple[ir.Action, list[tuple[tuple[str, str, Span], ...]]]] = {}
         # lifecycle node action key -> (key, span) of the EmitEvent(ChangeState) actions naming it
         self.change_requests: dict[str, list[tuple[str, Span]]] = {}
@@ -241,8 +241,9 @@ class Instantiator:
         if a.condition is not None:
             self.read_site = a.condition.span
             active = combine(active, self.ev.condition(a.condition.kind, a.condition.value, scope, a.condition.span))
-        # what an OpaqueFunction's body performs is read there, not where the action is
-        self.read_site = None if isinstance(a, ir.OpaqueAction) else a.span
+        # elsewhere the LaunchConfiguration's own place says more (a value a helper builds, what an
+        # OpaqueFunction's body performs)
+        self.read_site = None
         # Frames are never mutated: an action that changes nothing keeps its parent's frame (most
         # do; a dataclasses.replace per action was a tenth of resolving a large workspace).
         self.frame = outer if active is outer.active else replace(outer, active=active)

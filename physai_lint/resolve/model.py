@@ -150,8 +150,8 @@ class ConfigRead:
     has_default: bool
     active: Activity = True
     note: str = ""  # "timer period": read when a TimerAction performs its period, after the pass
-    # the condition or action whose evaluation made the read: where a LaunchConfiguration made
-    # elsewhere (a Python variable) is used
+    # the condition whose evaluation made the read: where a LaunchConfiguration made elsewhere
+    # (a Python variable) is used
     site: Span | None = None
 
 

@@ -1,6 +1,6 @@
-"""L101 where a LaunchConfiguration held in a Python variable is read: at the condition or action
-that uses it (the read launch makes there fails), with the LaunchConfiguration related; inline
-ones and those an OpaqueFunction's body performs stay where they are written."""
+"""L101 where a LaunchConfiguration held in a Python variable is read by a condition: at the
+condition (the read launch makes there fails), with the LaunchConfiguration related; other reads,
+inline ones and those an OpaqueFunction's body performs stay where they are written."""
 from __future__ import annotations
 
 from typing import Any
@@ -43,7 +43,7 @@ def test_reported_where_the_variable_is_used(demo_package: Any, tmp_path: Any) -
                    for f in run_check(opts).findings if f.code == "L101")
     assert found == [
         (9, "late", []),  # performed in the function's body: there
+        (14, "rate", []),  # read by an action: where it is written
         (16, "use_rviz", [13]),  # the condition that reads it; the LaunchConfiguration related
-        (19, "rate", [14]),  # the action that reads it
         (20, "inline", []),  # written in the action
     ]

@@ -25,9 +25,6 @@ _STATIC_TF_OPTIONS = {
     "--x": "translation", "--y": "translation", "--z": "translation",
     "--frame-id": "frame", "--child-frame-id": "frame", "--help": "help", "-h": "help",
 }
-# the distros whose static_transform_publisher parses flags (ros2/geometry2#392, humble on);
-# before, it took the old positional forms only
-_FLAG_DISTROS_BEFORE = frozenset({"foxy", "galactic", "eloquent", "dashing"})
 
 
 def static_tf_problem(args: list[str]) -> tuple[str, int | None, int] | None:
@@ -84,11 +81,17 @@ def _static_tf_hint(message: str, args: list[str], index: int | None, count: int
     word = args[index] if index is not None else None
     if word is not None and word.startswith("-") and word.replace("_", "-") in _STATIC_TF_OPTIONS:
         return f'"{word}" is not one of its options; it is spelled {word.replace("_", "-")}'
+    if word is not None and len(word.split()) > 1:
+        return (f'"{word}" is one argument: launch passes each item of arguments= as one word; give '
+                "each value as its own item")
+    if message.startswith("Failed to parse"):
+        return f'"{word}" is not a number'
     if message.startswith("Cannot specify both new-style"):
         return ("it takes either flags (--x ... --frame-id F --child-frame-id C) or the old positional "
                 "form (x y z yaw pitch roll frame child, or x y z qx qy qz qw frame child), not both")
     if message.startswith("Extra unparsed"):
-        return (f"{count} words are neither options nor their values; the old positional form has 8 "
+        return (f"{count} {'word is' if count == 1 else 'words are'} neither options nor their values; "
+                "the old positional form has 8 "
                 "(x y z yaw pitch roll frame child) or 9 (x y z qx qy qz qw frame child), without flags")
     if message.endswith("must not be empty"):
         return "--frame-id and --child-frame-id are required"
@@ -97,8 +100,6 @@ def _static_tf_hint(message: str, args: list[str], index: int | None, count: int
 
 @rule("L117", "invalid-node-arguments")
 def invalid_node_arguments(ctx: CheckContext) -> Iterator[Diagnostic]:
-    if ctx.distro in _FLAG_DISTROS_BEFORE:
-        return
     seen: set[object] = set()
     for _launch, node in all_nodes(ctx, include_inactive=False):
         if (node.package, node.executable) != ("tf2_ros", "static_transform_publisher"):
@@ -107,6 +108,8 @@ def invalid_node_arguments(ctx: CheckContext) -> Iterator[Diagnostic]:
         if own is None:
             continue
         args = [a for _, a in own]
+        if any("'" in a or '"' in a for a in args):
+            continue  # XML/YAML args are split by shlex, which the words here may not show
         problem = static_tf_problem(args)
         if problem is None:
             continue

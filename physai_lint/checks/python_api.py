@@ -224,16 +224,22 @@ def late_bound_variable(ctx: CheckContext) -> Iterator[Diagnostic]:
         for f in facts.late_bound:
             values = f" is {f.now} by then, not {f.made} as when the function was made" \
                 if f.made and f.now else " has another value by then than when the function was made"
-            when = "runs the OpaqueFunction" if f.caller == "OpaqueFunction" else f"runs the {f.caller} handler"
+            opaque = f.caller == "OpaqueFunction"
+            when = "runs the OpaqueFunction" if opaque else f"runs the {f.caller} handler"
+            if opaque:
+                help_ = (f"bind the value when the function is made: a default argument (lambda context, "
+                         f"{f.name}={f.name}: ...), OpaqueFunction(function=..., kwargs={{'{f.name}': "
+                         f"{f.name}}}) or functools.partial(function, {f.name}={f.name})")
+            else:  # launch calls a handler's function as on_event(event, context)
+                help_ = (f"bind the value when the handler is made: a default argument after the event and "
+                         f"the context (lambda event, context, {f.name}={f.name}: ...) or "
+                         f"functools.partial(function, {f.name}={f.name})")
             yield Diagnostic(
                 "L013", f.span,
                 f'this function reads "{f.name}" when launch {when}, after generate_launch_description '
-                f"has returned: {f.name}{values} (a Python closure reads the variable, not its value; "
-                "every function made in a loop sees the last one)",
-                help=f"bind the value when the function is made: a default argument (lambda context, "
-                     f"{f.name}={f.name}: ...), OpaqueFunction(function=..., kwargs={{'{f.name}': "
-                     f"{f.name}}}) or functools.partial",
-                key=f.name)
+                f"has returned: {f.name}{values} (a Python closure reads the variable when it runs, not "
+                "the value it had when the function was made)",
+                help=help_, key=f.name)
 
 
 @rule("L008", "wrong-argument-type")

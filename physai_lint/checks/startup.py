@@ -186,9 +186,10 @@ def exit_of_long_running_node(ctx: CheckContext) -> Iterator[Diagnostic]:
 
 
 def _runs_until_shutdown(ctx: CheckContext, node: NodeInstance) -> str | None:
-    """Why ``node`` serves until shutdown, or None when it may end by itself: a container, a
-    lifecycle node, a node whose code offers services or actions, or a bundled node (those are
-    servers, drivers and publishers, not one-shot tools) that both subscribes and publishes."""
+    """Why ``node`` serves until shutdown, or None when it may end by itself (or that is not
+    known): a container, a lifecycle node, a node whose code offers services or actions, or a
+    node of a bundled description that both subscribes and publishes (a processing node; a
+    bundled one-shot tool such as ros_gz_sim ``create`` only subscribes, if at all)."""
     if node.kind == "container":
         return "a component container"
     if node.kind == "lifecycle_node":

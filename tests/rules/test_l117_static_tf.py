@@ -35,3 +35,27 @@ def test_accepted(line: str) -> None:
 def test_refused(line: str, message: str, index: int | None) -> None:
     found = static_tf_problem(line.split())
     assert found is not None and found[:2] == (message, index)
+
+
+def test_quotes_and_one_string_arguments(demo_findings) -> None:
+    launch = """from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='tf2_ros', executable='static_transform_publisher',
+             arguments=['0 0 0 0 0 0 map odom']),
+        Node(package='tf2_ros', executable='static_transform_publisher',
+             arguments=['--x', 'one', '--frame-id', 'map', '--child-frame-id', 'odom']),
+    ])
+"""
+    xml = """<launch>
+  <node pkg="tf2_ros" exec="static_transform_publisher" args="--x '-0.5' --frame-id map --child-frame-id odom"/>
+</launch>
+"""
+    found = demo_findings({"launch/a.launch.py": launch}, "launch/a.launch.py", "L117")
+    assert [(line, "is one argument" in m or '"one" is not a number' in m) for line, m in found] == \
+        [(8, True), (10, True)]
+    # launch splits XML args with shlex: a quoted word is not known here as it is there
+    assert demo_findings({"launch/a.launch.xml": xml}, "launch/a.launch.xml", "L117") == []

@@ -6,6 +6,7 @@ everything touching the machine (environment, files outside ``read_file``, proce
 from __future__ import annotations
 
 import ast
+import dataclasses
 import json
 import posixpath
 from typing import TYPE_CHECKING, Any
@@ -638,18 +639,20 @@ def make_lobj(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any],
             def run_opaque(fn: UserFunc = fn) -> None:
                 start, peeks, undecided, sets = len(ev.performed), len(ev.peeked), ev.undecided, len(ev.config_sets)
                 ev.guarded += 1  # the body runs when launch executes the action, if it does
+                owner = _late_owner(ev, obj)
                 try:
                     obj.extra["result"] = call_user(ev, fn, [*bound[0], ContextSym(), *fargs],
                                                     {**bound[1], **fkwargs}, span)
                 finally:
                     ev.guarded -= 1
+                    ev.late_owner = owner
                 obj.extra["performed"] = tuple(ev.performed[start:])
                 obj.extra["peeked"] = tuple(ev.peeked[peeks:])
                 obj.extra["undecided"] = ev.undecided > undecided
                 obj.extra["sets"] = tuple(ev.config_sets[sets:])
 
-            run_opaque()
             _bind_late(ev, obj, fn, run_opaque)
+            run_opaque()
         else:
             obj.extra["result"] = Opaque("OpaqueFunction with a function that cannot be evaluated statically", span)
     elif short in _HANDLER_KEYS:
@@ -660,13 +663,15 @@ def make_lobj(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any],
                     nargs = len(fn.node.args.posonlyargs) + len(fn.node.args.args)
                     fake = [Opaque("the event is known only at launch time", span), ContextSym()][:nargs]
                     ev.guarded += 1
+                    owner = _late_owner(ev, obj)
                     try:
                         obj.extra["entities_result"] = call_user(ev, fn, fake, {}, span)
                     finally:
                         ev.guarded -= 1
+                        ev.late_owner = owner
 
-                run_handler()
                 _bind_late(ev, obj, fn, run_handler)
+                run_handler()
                 break
     ev.objects.append(obj)
     return obj
@@ -692,7 +697,15 @@ def _bind_late(ev: Evaluator, obj: LObj, fn: UserFunc, run: Any) -> None:
         return
     names = _enclosing_reads(fn)
     if names:
-        ev.late_calls.append((obj, fn, names, run))
+        ev.late_calls.append((obj, fn, names, run, ev.late_owner))
+
+
+def _late_owner(ev: Evaluator, obj: LObj) -> tuple[int, int] | None:
+    """Count one more run of ``obj``'s function and make it the owner of the functions its body
+    makes (``late_owner``: (id, run)); returns the owner before, to restore."""
+    runs = ev.late_runs[id(obj)] = ev.late_runs.get(id(obj), 0) + 1
+    before, ev.late_owner = ev.late_owner, (id(obj), runs)
+    return before
 
 
 def _enclosing_reads(fn: UserFunc, depth: int = 0) -> list[tuple[Any, str, Any]]:
@@ -704,8 +717,21 @@ def _enclosing_reads(fn: UserFunc, depth: int = 0) -> list[tuple[Any, str, Any]]
     own = {p.arg for p in [*node.args.posonlyargs, *node.args.args, *node.args.kwonlyargs]}
     own.update(p.arg for p in (node.args.vararg, node.args.kwarg) if p is not None)
     body = [node.body] if isinstance(node, ast.Lambda) else node.body
-    names = [n for part in body for n in ast.walk(part) if isinstance(n, ast.Name)]
-    own.update(n.id for n in names if not isinstance(n.ctx, ast.Load))
+    names: list[ast.Name] = []
+    for part in body:
+        for n in ast.walk(part):
+            if isinstance(n, ast.Name):
+                names.append(n)
+                if not isinstance(n.ctx, ast.Load):
+                    own.add(n.id)
+            # any other name the body binds, in it or in a scope nested in it: its own (or
+            # shadowing the enclosing one where it is read)
+            elif isinstance(n, ast.arg) or (isinstance(n, ast.ExceptHandler) and n.name):
+                own.add(n.arg if isinstance(n, ast.arg) else n.name)  # type: ignore[arg-type]
+            elif isinstance(n, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+                own.add(n.name)
+            elif isinstance(n, (ast.Import, ast.ImportFrom)):
+                own.update(a.asname or a.name.split(".")[0] for a in n.names)
     out: list[tuple[Any, str, Any]] = []
     for name in sorted({n.id for n in names} - own):
         scope, chain = fn.closure, []
@@ -735,15 +761,48 @@ def _plain_repr(value: Any) -> str:
     return ""
 
 
+def _same(a: Any, b: Any, depth: int = 0) -> bool:
+    """Whether two values of a variable are the same value: equal plain data, or launch objects
+    made at one call site with the same arguments (a loop that makes an equal value each time
+    has not changed what the function reads)."""
+    if a is b:
+        return True
+    if isinstance(a, str) and isinstance(b, str):  # a literal (SStr) or a computed string
+        return str(a) == str(b)
+    if type(a) is not type(b) or depth > 8 or a is _UNBOUND or b is _UNBOUND:
+        return False
+    if isinstance(a, LObj):
+        return a.qual == b.qual and a.node is b.node and len(a.args) == len(b.args) \
+            and all(_same(x, y, depth + 1) for x, y in zip(a.args, b.args)) \
+            and a.kwargs.keys() == b.kwargs.keys() \
+            and all(_same(a.kwargs[k], b.kwargs[k], depth + 1) for k in a.kwargs)
+    if isinstance(a, (list, tuple)):
+        return len(a) == len(b) and all(_same(x, y, depth + 1) for x, y in zip(a, b))
+    if isinstance(a, dict):
+        return a.keys() == b.keys() and all(_same(a[k], b[k], depth + 1) for k in a)
+    if dataclasses.is_dataclass(a) and a.__dataclass_params__.eq is False:  # type: ignore[attr-defined]
+        # the evaluator's own values compare by identity (SymStr of get_package_share_directory)
+        return all(_same(getattr(a, f.name), getattr(b, f.name), depth + 1) for f in dataclasses.fields(a))
+    try:
+        return bool(a == b)
+    except Exception:  # noqa: BLE001 - a value whose comparison fails is another value
+        return False
+
+
 def late_bindings(ev: Evaluator) -> None:
     """Run again the functions ``_bind_late`` noted whose enclosing variables have been rebound since
     they were made (a loop moved on): launch calls them after ``generate_launch_description`` has
     returned, with the variables as they are then. A function run again may note others."""
     for _ in range(4):
         pending, ev.late_calls = ev.late_calls, []
-        for obj, fn, names, run in pending:
-            moved = [(name, value, scope.vars.get(name, _UNBOUND)) for scope, name, value in names
-                     if scope.vars.get(name, _UNBOUND) is not value]
+        for obj, fn, names, run, owner in pending:
+            if owner is not None and ev.late_runs.get(owner[0]) != owner[1]:
+                # made by a run of an enclosing function that has been run again since: that run
+                # made its own copy; this one, and what it made, launch never sees
+                ev.late_runs[id(obj)] = ev.late_runs.get(id(obj), 0) + 1
+                continue
+            moved = [(name, value, now) for scope, name, value in names
+                     if not _same(now := scope.vars.get(name, _UNBOUND), value)]
             if moved:
                 span = fn.module.spans.of(fn.node) if fn.module is not None else obj.span
                 caller = api.short(obj.qual)

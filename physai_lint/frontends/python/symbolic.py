@@ -55,9 +55,12 @@ class Recorder:
         self.opens: list[tuple[Value, Span]] = []
         self.guarded = 0
         # Functions launch calls later whose bodies read variables of an enclosing function
-        # (``calls.late_bindings``): (the action, (scope, name, value when made), run again).
-        self.late_calls: list[tuple[LObj, Any, list[tuple[Any, str, Any]], Any]] = []
+        # (``calls.late_bindings``): (the action, the function, [(scope, name, value when made)],
+        # run it again, the owner: (id, run) of the function whose body made it, or None).
+        self.late_calls: list[tuple[LObj, Any, list[tuple[Any, str, Any]], Any, tuple[int, int] | None]] = []
         self.late_bound: dict[tuple[Span, str], LateFact] = {}
+        self.late_runs: dict[int, int] = {}  # id of the action -> how many times its function ran
+        self.late_owner: tuple[int, int] | None = None
 
     def lookup(self, found: FindPackage) -> None:
         if not self.guarded and not getattr(self, "cond_stack", None):

@@ -11,7 +11,7 @@ from collections.abc import Iterator
 
 from physai_lint.checks._util import all_nodes
 from physai_lint.checks.base import CheckContext, rule
-from physai_lint.interfaces.arguments import _argument_spans, _own_arguments
+from physai_lint.interfaces.arguments import argument_spans, own_arguments
 from physai_lint.model.findings import Diagnostic
 
 # std::stod: leading white space, then a decimal or hexadecimal number, "inf"/"infinity" or "nan";
@@ -104,7 +104,7 @@ def invalid_node_arguments(ctx: CheckContext) -> Iterator[Diagnostic]:
     for _launch, node in all_nodes(ctx, include_inactive=False):
         if (node.package, node.executable) != ("tf2_ros", "static_transform_publisher"):
             continue
-        own = _own_arguments(node.arguments)
+        own = own_arguments(node.arguments)
         if own is None:
             continue
         args = [a for _, a in own]
@@ -114,7 +114,7 @@ def invalid_node_arguments(ctx: CheckContext) -> Iterator[Diagnostic]:
         if problem is None:
             continue
         message, index, count = problem
-        spans = _argument_spans(node)
+        spans = argument_spans(node)
         span = None
         if index is not None and spans:
             span = spans[own[index][0]]

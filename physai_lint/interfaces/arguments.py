@@ -30,7 +30,7 @@ def from_arguments(iface: NodeInterface | None, node: Any) -> NodeInterface | No
     """``iface`` with the endpoints ``node``'s arguments decide, or None when they are not known
     (an argument not known statically, a bridge configuration file that may be given)."""
     key = (node.package, node.executable)
-    own = _own_arguments(node.arguments)
+    own = own_arguments(node.arguments)
     if own is None:
         return None
     args = [a for _, a in own]
@@ -50,7 +50,7 @@ def from_arguments(iface: NodeInterface | None, node: Any) -> NodeInterface | No
     pubs: list[Endpoint] = []
     subs: list[Endpoint] = []
     services: list[Endpoint] = []
-    spans = _argument_spans(node)
+    spans = argument_spans(node)
     for i, arg in own:
         bridge = _bridge(arg)
         if bridge is None:
@@ -67,7 +67,7 @@ def from_arguments(iface: NodeInterface | None, node: Any) -> NodeInterface | No
     return replace(base, publishers=pubs, subscribers=subs, services=services, clients=[])
 
 
-def _own_arguments(arguments: tuple[str | None, ...]) -> list[tuple[int, str]] | None:
+def own_arguments(arguments: tuple[str | None, ...]) -> list[tuple[int, str]] | None:
     """The arguments left once the ``--ros-args ... [--]`` sections are removed (what
     ``init_and_remove_ros_arguments`` leaves), with their indices, or None when one is not known."""
     out: list[tuple[int, str]] = []
@@ -84,7 +84,7 @@ def _own_arguments(arguments: tuple[str | None, ...]) -> list[tuple[int, str]] |
     return out
 
 
-def _argument_spans(node: Any) -> list[Span | None] | None:
+def argument_spans(node: Any) -> list[Span | None] | None:
     """Where each of ``node.arguments`` is written, when the launch file's arguments match them
     one to one (XML ``args="a b"`` gives one per word); None otherwise."""
     written = getattr(getattr(node, "action", None), "arguments", None)

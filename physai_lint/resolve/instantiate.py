@@ -236,14 +236,17 @@ class Instantiator:
             self._visit(action, scope)
 
     def _visit(self, a: ir.Action, scope: Scope) -> None:
-        outer, outer_site = self.frame, self.read_site
+        outer = self.frame
         active = outer.active
         if a.condition is not None:
+            # elsewhere the LaunchConfiguration's own place says more (a value a helper builds, what
+            # an OpaqueFunction's body performs)
             self.read_site = a.condition.span
-            active = combine(active, self.ev.condition(a.condition.kind, a.condition.value, scope, a.condition.span))
-        # elsewhere the LaunchConfiguration's own place says more (a value a helper builds, what an
-        # OpaqueFunction's body performs)
-        self.read_site = None
+            try:
+                active = combine(active, self.ev.condition(a.condition.kind, a.condition.value, scope,
+                                                           a.condition.span))
+            finally:
+                self.read_site = None
         # Frames are never mutated: an action that changes nothing keeps its parent's frame (most
         # do; a dataclasses.replace per action was a tenth of resolving a large workspace).
         self.frame = outer if active is outer.active else replace(outer, active=active)
@@ -273,7 +276,7 @@ class Instantiator:
             else:
                 self._dispatch(a, scope)
         finally:
-            self.frame, self.read_site = outer, outer_site
+            self.frame = outer
 
     def _dispatch(self, a: ir.Action, scope: Scope) -> None:
         if isinstance(a, ir.DeclareArgument):

@@ -638,14 +638,8 @@ def make_lobj(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any],
         if isinstance(fn, UserFunc) and isinstance(fargs, (list, tuple)) and isinstance(fkwargs, dict):
             def run_opaque(fn: UserFunc = fn) -> None:
                 start, peeks, undecided, sets = len(ev.performed), len(ev.peeked), ev.undecided, len(ev.config_sets)
-                ev.guarded += 1  # the body runs when launch executes the action, if it does
-                owner = _late_owner(ev, obj)
-                try:
-                    obj.extra["result"] = call_user(ev, fn, [*bound[0], ContextSym(), *fargs],
-                                                    {**bound[1], **fkwargs}, span)
-                finally:
-                    ev.guarded -= 1
-                    ev.late_owner = owner
+                obj.extra["result"] = _call_later(ev, obj, fn, [*bound[0], ContextSym(), *fargs],
+                                                  {**bound[1], **fkwargs}, span)
                 obj.extra["performed"] = tuple(ev.performed[start:])
                 obj.extra["peeked"] = tuple(ev.peeked[peeks:])
                 obj.extra["undecided"] = ev.undecided > undecided
@@ -662,13 +656,7 @@ def make_lobj(ev: Evaluator, qual: str, args: list[Any], kwargs: dict[str, Any],
                 def run_handler(fn: UserFunc = fn) -> None:
                     nargs = len(fn.node.args.posonlyargs) + len(fn.node.args.args)
                     fake = [Opaque("the event is known only at launch time", span), ContextSym()][:nargs]
-                    ev.guarded += 1
-                    owner = _late_owner(ev, obj)
-                    try:
-                        obj.extra["entities_result"] = call_user(ev, fn, fake, {}, span)
-                    finally:
-                        ev.guarded -= 1
-                        ev.late_owner = owner
+                    obj.extra["entities_result"] = _call_later(ev, obj, fn, fake, {}, span)
 
                 _bind_late(ev, obj, fn, run_handler)
                 run_handler()
@@ -700,12 +688,19 @@ def _bind_late(ev: Evaluator, obj: LObj, fn: UserFunc, run: Any) -> None:
         ev.late_calls.append((obj, fn, names, run, ev.late_owner))
 
 
-def _late_owner(ev: Evaluator, obj: LObj) -> tuple[int, int] | None:
-    """Count one more run of ``obj``'s function and make it the owner of the functions its body
-    makes (``late_owner``: (id, run)); returns the owner before, to restore."""
+def _call_later(ev: Evaluator, obj: LObj, fn: UserFunc, args: list[Any], kwargs: dict[str, Any],
+                span: Span) -> Any:
+    """Run ``fn``, the function launch calls when ``obj`` executes or its event comes, if it does
+    (``guarded``): one more run of it (``late_runs``), the owner of the functions its body makes
+    (``late_owner``: (id, run))."""
     runs = ev.late_runs[id(obj)] = ev.late_runs.get(id(obj), 0) + 1
     before, ev.late_owner = ev.late_owner, (id(obj), runs)
-    return before
+    ev.guarded += 1
+    try:
+        return call_user(ev, fn, args, kwargs, span)
+    finally:
+        ev.guarded -= 1
+        ev.late_owner = before
 
 
 def _enclosing_reads(fn: UserFunc, depth: int = 0) -> list[tuple[Any, str, Any]]:
@@ -752,15 +747,6 @@ def _enclosing_reads(fn: UserFunc, depth: int = 0) -> list[tuple[Any, str, Any]]
 _UNBOUND = object()
 
 
-def _plain_repr(value: Any) -> str:
-    """``repr`` of a plain value (a string, a number, a bool, None) for a message, shortened; ""
-    for any other value."""
-    if value is None or isinstance(value, (str, int, float, bool)):
-        text = repr(str(value) if isinstance(value, str) else value)  # a literal keeps its span (SStr)
-        return text if len(text) <= 40 else text[:37] + "..."
-    return ""
-
-
 def _same(a: Any, b: Any, depth: int = 0) -> bool:
     """Whether two values of a variable are the same value: equal plain data, or launch objects
     made at one call site with the same arguments (a loop that makes an equal value each time
@@ -789,6 +775,15 @@ def _same(a: Any, b: Any, depth: int = 0) -> bool:
         return False
 
 
+def _late_shown(value: Any) -> str:
+    """A variable's value for L013's message as the file writes it (``symbolic.shown_value``),
+    or "" when it is not plain data."""
+    text = symbolic.shown_value(value)
+    if "..." in text:
+        return ""
+    return text if len(text) <= 40 else text[:37] + "..."
+
+
 def late_bindings(ev: Evaluator) -> None:
     """Run again the functions ``_bind_late`` noted whose enclosing variables have been rebound since
     they were made (a loop moved on): launch calls them after ``generate_launch_description`` has
@@ -811,7 +806,7 @@ def late_bindings(ev: Evaluator) -> None:
                     # is how the file means it
                     if made is not _UNBOUND and not isinstance(made, (UserFunc, Partial)):
                         ev.late_bound.setdefault((span, name), LateFact(
-                            caller, name, _plain_repr(made), _plain_repr(now), span))
+                            caller, name, _late_shown(made), _late_shown(now), span))
                 saved, ev.cond_stack = ev.cond_stack, list(obj.tags)
                 try:
                     run()

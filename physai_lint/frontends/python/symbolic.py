@@ -126,7 +126,7 @@ class Recorder:
         key = (call, span)
         if key not in self.wrong_types:
             # an action given where an event belongs: named in full (launch.actions.Shutdown)
-            text = f"{value.qual}(...)" if kind == "event" and isinstance(value, LObj) else _shown(value)
+            text = f"{value.qual}(...)" if kind == "event" and isinstance(value, LObj) else shown_value(value)
             if len(text) > 60:
                 text = text[:57] + "..."
             kind_name = "substitution" if is_subst(value) else \
@@ -134,20 +134,20 @@ class Recorder:
             self.wrong_types[key] = TypeFact(kind, call, text, kind_name, span)  # type: ignore[arg-type]
 
 
-def _shown(value: Any) -> str:
+def shown_value(value: Any) -> str:
     """A value as the launch file wrote it, for messages: strings, numbers and bools as Python
     literals, anything else as ``...``; a dict by its keys."""
     if isinstance(value, dict):
-        return "{" + ", ".join(f"{_shown(k)}: ..." for k in value) + "}"
+        return "{" + ", ".join(f"{shown_value(k)}: ..." for k in value) + "}"
     if isinstance(value, (list, tuple)):
-        inner = ", ".join(_shown(x) for x in value)
+        inner = ", ".join(shown_value(x) for x in value)
         return f"[{inner}]" if isinstance(value, list) else f"({inner}{',' if len(value) == 1 else ''})"
     if isinstance(value, str):
         return repr(str(value))
     if type(value) in (bool, int, float):
         return repr(value)
     if is_subst(value):
-        args = ", ".join(_shown(a) for a in value.args)
+        args = ", ".join(shown_value(a) for a in value.args)
         return f"{api.short(value.qual)}({args})"
     return "..."
 

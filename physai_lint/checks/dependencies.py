@@ -7,12 +7,12 @@ import re
 from collections.abc import Iterator
 from typing import Any
 
+from physai_lint.checks._urls import ParamString, file_url_path, package_url, parameter_strings
 from physai_lint.checks._util import ir_objects, python_facts, suggestion
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic
 from physai_lint.model.span import Span
 from physai_lint.model.values import Command, FindPackage, PathJoin, literal_of
-from physai_lint.resolve.model import ResolvedParam, ResolvedParamDict
 
 
 def _references(ctx: CheckContext) -> Iterator[tuple[str, Span, str]]:
@@ -212,27 +212,68 @@ def missing_file(ctx: CheckContext) -> Iterator[Diagnostic]:
 
 
 def _parameter_files(ctx: CheckContext, seen: set[tuple[object, str]]) -> Iterator[Diagnostic]:
-    """Paths into a workspace package's share directory given as parameter values in launch files
-    (a bridge's ``config_file``, a map server's ``yaml_filename``, a behavior tree's XML; list
-    items too): the node is given a path that is not there."""
-    for launch in ctx.launches:
-        for node in launch.nodes:
-            for source in node.param_sources:
-                if not isinstance(source, ResolvedParamDict):
-                    continue
-                for rp in source.params:
-                    for value, span in _path_values(rp):
-                        found = _unfound_share_file(ctx, value)
-                        if found is None or (span, value) in seen or _PATTERN.search(value):
-                            continue
-                        pkg, rel, loc = found
-                        if loc.status == "missing" and (_names_an_output(rp.name) or _is_a_stem(ctx, pkg, rel)):
-                            continue  # a file the node writes need not exist (output_log_file)
-                        seen.add((span, value))
-                        yield _file_problem(
-                            ctx, span, pkg, rel, loc,
-                            f'given as parameter "{rp.name}" of {node.fqn or node.executable}',
-                            check="path", present="exists in")
+    """Paths into a workspace package's share directory given as parameter values: built in a
+    launch file (a bridge's ``config_file``, a map server's ``yaml_filename``, a behavior tree's
+    XML; list items too), or a URL the node resolves itself (``package://<package>/<path>``,
+    ``file:///<path>``: camera_info_manager's ``camera_info_url``), in a launch or parameter file:
+    the node is given a path that is not there."""
+    root = getattr(ctx.packages, "install_root", None)
+    for ps in parameter_strings(ctx):
+        path = file_url_path(ps.value)
+        at_package = package_url(ps.value) if path is None else None
+        if at_package is not None:
+            pkg, rel = at_package
+            if not root or ctx.packages.workspace_package(pkg) is None:
+                continue
+            path = f"{root}/{pkg}/share/{pkg}/{posixpath.normpath(rel)}"
+        what = f'given as parameter "{ps.name}" {ps.whose}'
+        if path is not None:
+            what = f'named by URL "{ps.value}", {what},'
+        path = path or ps.value
+        if (ps.span, ps.value) in seen or _PATTERN.search(path):
+            continue
+        glued = _glued_share(ctx, path)
+        if glued is not None:
+            seen.add((ps.span, ps.value))
+            yield _glued_problem(ctx, ps, *glued)
+            continue
+        found = _unfound_share_file(ctx, path)
+        if found is None:
+            continue
+        pkg, rel, loc = found
+        if loc.status == "missing" and (_names_an_output(ps.name) or _is_a_stem(ctx, pkg, rel)):
+            continue  # a file the node writes need not exist (output_log_file)
+        seen.add((ps.span, ps.value))
+        fails = ("; camera_info_manager logs \"Camera calibration file ... not found\" and the camera "
+                 "runs uncalibrated (a CameraInfo with K all zero)") if ps.base == "camera_info_url" else ""
+        yield _file_problem(ctx, ps.span, pkg, rel, loc, what, fails, fails, check="path", present="exists in")
+
+
+def _glued_share(ctx: CheckContext, path: str) -> tuple[str, str] | None:
+    """(package, what follows) when ``path`` runs a workspace package's share directory into the
+    next part with no "/" between (``[FindPackageShare('cam'), 'config/cam.yaml']`` gives
+    ".../share/camconfig/cam.yaml"); else None."""
+    root = getattr(ctx.packages, "install_root", None)
+    if not root or not path.startswith(root + "/"):
+        return None
+    name, _, rest = path[len(root) + 1 :].partition("/")
+    share = f"share/{name}"
+    if not rest.startswith(share) or len(rest) == len(share) or rest[len(share)] == "/" \
+            or ctx.packages.workspace_package(name) is None:
+        return None
+    return name, rest[len(share) :]
+
+
+def _glued_problem(ctx: CheckContext, ps: ParamString, pkg: str, after: str) -> Diagnostic:
+    """U104 for a parameter path that runs package ``pkg``'s share directory into ``after``."""
+    word = after.split("/", 1)[0]
+    return Diagnostic(
+        "U104", ps.span,
+        f'path given as parameter "{ps.name}" {ps.whose} runs the share directory of package "{pkg}" '
+        f'into "{word}": it names "share/{pkg}{after}", which does not exist; a "/" is missing between '
+        f'"share/{pkg}" and "{after}"',
+        help=f'put a "/" before "{after}" (or build the path with PathJoinSubstitution, which adds it)',
+        key=f"{pkg}{after}")
 
 
 # A value that is no single path: a glob (config/*.yaml), a search path (models:/other)
@@ -256,17 +297,6 @@ def _is_a_stem(ctx: CheckContext, pkg: str, rel: str) -> bool:
     office.posegraph and office.data)."""
     files = getattr(ctx.packages.workspace_package(pkg), "files", None) or ()
     return any(f.startswith(rel + ".") for f in files)
-
-
-def _path_values(rp: ResolvedParam) -> Iterator[tuple[str, Span]]:
-    """The string values of a parameter (each item of a list) with where each is written."""
-    if isinstance(rp.value, str):
-        yield rp.value, rp.span
-    elif isinstance(rp.value, list):
-        spans = rp.item_spans if rp.item_spans and len(rp.item_spans) == len(rp.value) else None
-        for i, item in enumerate(rp.value):
-            if isinstance(item, str):
-                yield item, spans[i] if spans else rp.span
 
 
 def _file_problem(ctx: CheckContext, span: Span, pkg: str, rel: str, loc: Any, what: str,

@@ -144,6 +144,36 @@ def unknown_package(ctx: CheckContext) -> Iterator[Diagnostic]:
                 "U101", span,
                 f'package "{name}" is not in the workspace or the {ctx.distro} distro{extra}',
                 help=fix, key=name)
+    yield from _url_packages(ctx, reported)
+
+
+def _url_packages(ctx: CheckContext, reported: set[tuple[object, str]]) -> Iterator[Diagnostic]:
+    """The package of a ``package://<package>/<path>`` parameter value (camera_info_manager's
+    ``camera_info_url``, a resource_retriever mesh), in a launch or a parameter file: the node looks
+    it up in the ament index when it resolves the URL (camera_info_manager on humble: an uncaught
+    PackageNotFoundError ends the process)."""
+    from physai_lint.checks._urls import package_url, parameter_strings
+
+    for ps in parameter_strings(ctx):
+        found = package_url(ps.value)
+        if found is None:
+            continue
+        name = found[0]
+        if ctx.packages.has_package(name) or (ps.span, name) in reported:
+            continue
+        reported.add((ps.span, name))
+        skipped = _skipped(ctx, name, ps.span)
+        if skipped is not None:
+            yield skipped
+            continue
+        if _declared(ctx, name, ps.span.file):
+            continue
+        extra, fix = _package_help(ctx, name, None)
+        yield Diagnostic(
+            "U101", ps.span,
+            f'package "{name}" of URL "{ps.value}" (parameter "{ps.name}" {ps.whose}) is not in the '
+            f"workspace or the {ctx.distro} distro, so the node cannot resolve the URL{extra}",
+            help=fix, key=name)
 
 
 @rule("U102", "unknown-executable")

@@ -24,6 +24,16 @@ def invalid_condition_value(ctx: CheckContext) -> Iterator[Diagnostic]:
                      "LaunchConfigurationEquals / $(equals ...) / PythonExpression",
                 key=value)
             continue
+        if how == "respawn":
+            yield Diagnostic(
+                "L109", span,
+                f'respawn gets "{value}", which is not a YAML boolean (true/false, yes/no, on/off); launch '
+                f"types it with yaml.safe_load when it starts the process (ExecuteLocal.execute), so the "
+                f"launch fails with ValueError: \"Cannot convert value '{value}' to '<class 'bool'>'\"",
+                help='pass "true" or "false" (IfCondition also takes "1"/"0", respawn does not), or a bool '
+                     "literal in Python (respawn=True)",
+                key=(how, value))
+            continue
         # NotSubstitution & co. type the operand with yaml.safe_load (type_utils.coerce_to_type)
         yield Diagnostic(
             "L109", span,

@@ -243,7 +243,7 @@ class _Builder:
         cmd = self.val(el, "cmd")
         return ExecuteProcess(self.ident(el), el.span, self.condition(el),
                               split_cmdline(cmd) if cmd is not None else None, self.val(el, "name"),
-                              self.other(el))
+                              self.other(el), self.val(el, "respawn"))
 
     def on_exit(self, el: Element, action: Action) -> list[Action]:
         """``on_exit="shutdown"``: ``ExecuteProcess.parse`` gives the process ``on_exit=[Shutdown()]``,
@@ -281,7 +281,8 @@ class _Builder:
             arguments=split_cmdline(args) if args is not None else (),
             ros_arguments=split_cmdline(ros_args) if ros_args is not None else (),
             composable_nodes=tuple(self.composable(c) for c in self.kids(el, "composable_node")),
-            field_spans=tuple(spans), exec_name=self.val(el, "exec_name"), other=self.other(el))
+            field_spans=tuple(spans), exec_name=self.val(el, "exec_name"), other=self.other(el),
+            respawn=self.val(el, "respawn"))
 
     def load(self, el: Element) -> Action:
         return LoadComposableNodes(
@@ -395,7 +396,7 @@ def _sub_span(span: Span | None, a: int, b: int) -> Span | None:
 
 
 # ExecuteProcess.parse: read with parse_substitution (the numbers and bools are literals).
-_OTHER_ATTRS = ("output", "respawn", "launch-prefix", "cwd")
+_OTHER_ATTRS = ("output", "launch-prefix", "cwd")
 _NODE_FIELDS = (("pkg", "package"), ("exec", "executable"), ("name", "name"),
                 ("namespace", "namespace"), ("exec_name", "exec_name"), ("args", "arguments"),
                 ("ros_args", "ros_arguments"))

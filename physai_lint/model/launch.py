@@ -209,6 +209,9 @@ class NodeAction(ActionBase):
     # configures and activates the node itself): False when not given or false, None when its
     # value is not known.
     autostart: bool | None = False
+    # ``respawn=`` given as text or substitutions (a bool literal is not kept): launch types what it
+    # substitutes with ``perform_typed_substitution(context, respawn, bool)`` when the action runs.
+    respawn: Value | None = None
 
     def span_of(self, field_name: str) -> Span:
         for key, span in self.field_spans:
@@ -231,6 +234,8 @@ class ExecuteProcess(ActionBase):
     cmd: tuple[Value, ...] | None
     name: Value | None = None
     other: tuple[Value, ...] = ()  # as NodeAction.other
+    respawn: Value | None = None  # as NodeAction.respawn
+    respawn_span: Span | None = None  # where ``respawn=`` is written
 
 
 @dataclass(frozen=True, slots=True)

@@ -9,7 +9,7 @@ from physai_lint.model import launch as ir
 from physai_lint.model import values as v
 from physai_lint.model.span import Span
 from physai_lint.resolve import names
-from physai_lint.resolve.evaluate import Scope
+from physai_lint.resolve.evaluate import Scope, yaml_bool
 from physai_lint.resolve.model import (
     LIFECYCLE_MANAGERS,
     EffRemap,
@@ -408,6 +408,7 @@ class NodeBuilder:
         self._note_run(inst_)
         for value in a.other:
             self.inst.ev.eval(value, scope)
+        self._respawn(a.respawn, scope, inst_.spans.get("respawn"))
         for cn in a.composable_nodes:
             self.component(cn, scope, inst_.fqn, inst_.id, inst_.namespace, inst_.action_id)
 
@@ -517,11 +518,24 @@ class NodeBuilder:
             self.component(cn, scope, container, container_id, container_ns,
                            f"{self.inst.frame.file}#{a.id}", honours, a.condition)
 
+    def _respawn(self, value: v.Value | None, scope: Scope, span: Span | None = None) -> None:
+        """``respawn=`` as text or substitutions: ``ExecuteLocal.execute`` types what it substitutes
+        with ``perform_typed_substitution(context, respawn, bool)`` (yaml.safe_load), which raises
+        ValueError for anything but a YAML boolean ('0' and '1' included, unlike IfCondition).
+        ``span``: the ``respawn=`` argument, where the value itself is written elsewhere (a
+        variable holding a LaunchConfiguration)."""
+        if value is None:
+            return
+        text = self.inst.ev.eval(value, scope)
+        if text is not None and yaml_bool(text) is None:
+            self.inst.on_bad_typed(span or v.span_of(value), text, "respawn")
+
     def process(self, a: ir.ExecuteProcess, scope: Scope) -> None:
         fr = self.inst.frame
         cmd = tuple(self.inst.ev.eval(x, scope) for x in (a.cmd or ()))
         for value in a.other:
             self.inst.ev.eval(value, scope)
+        self._respawn(a.respawn, scope, a.respawn_span)
         executable = cmd[0] if cmd else None
         inst_ = NodeInstance(
             id=self._id(), kind="process", package=None, executable=executable, name=None,

@@ -69,7 +69,7 @@ def _not_text(v: Any) -> bool:
 
 
 # ExecuteLocal arguments normalized to substitutions that no rule models (``NodeAction.other``).
-_OTHER_ARGS = ("output", "respawn", "prefix", "cwd", "sigterm_timeout", "sigkill_timeout")
+_OTHER_ARGS = ("output", "prefix", "cwd", "sigterm_timeout", "sigkill_timeout")
 
 
 # Arguments launch keeps as given and uses as a plain bool or number, never substituting them
@@ -237,7 +237,8 @@ class ActionBuilder:
             return L.LoadComposableNodes(i, s, cond, to_value(tgt, o.arg_span(-1, "target_container")), None, nodes)
         if n == "ExecuteProcess":
             return L.ExecuteProcess(i, s, cond, self._list_values(o.arg(-1, "cmd"), o.arg_span(-1, "cmd")),
-                                    opt_value(o, -1, "name"), self._other(o))
+                                    opt_value(o, -1, "name"), self._other(o), _respawn(o),
+                                    o.kw_spans.get("respawn"))
         if n in ("TimerAction", "RosTimer"):
             period = o.arg(0, "period")
             if isinstance(period, int):  # ensure_argument_type: str, substitutions or float; bool is an int
@@ -412,7 +413,7 @@ class ActionBuilder:
             self._list_values(kw.get("arguments"), o.arg_span(-1, "arguments")),
             self._list_values(kw.get("ros_arguments"), o.arg_span(-1, "ros_arguments")),
             self._composables(kw.get("composable_node_descriptions"), s) if kind == "container" else (),
-            fields, opt_value(o, -1, "exec_name"), self._other(o), _autostart(kw))
+            fields, opt_value(o, -1, "exec_name"), self._other(o), _autostart(kw), _respawn(o))
 
     def _other(self, o: LObj) -> tuple[Value, ...]:
         """Process arguments launch substitutes that no rule models (``NodeAction.other``)."""
@@ -524,6 +525,15 @@ def _distinct(values: tuple[Any, ...]) -> tuple[Any, ...]:
         if v not in out:
             out.append(v)
     return tuple(out)
+
+
+def _respawn(o: LObj) -> Value | None:
+    """``NodeAction.respawn``: the value when it is text or substitutions (a bool literal is
+    typed already; another literal fails ``normalize_typed_substitution``, L008's)."""
+    v = o.arg(-1, "respawn")
+    if v is None or type(v) in (bool, int, float):
+        return None
+    return opt_value(o, -1, "respawn")
 
 
 def _autostart(kw: dict[str, Any]) -> bool | None:

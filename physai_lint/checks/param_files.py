@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import os
 from collections.abc import Iterator
+from dataclasses import replace
 from typing import Any
 
 from physai_lint.checks._util import RELATIVE_PATH, all_nodes, switched_off_by, where
@@ -260,19 +261,30 @@ def _wildcards_for_components(path: str, model: Any, users: list[tuple[Any, Any]
 @rule("P104", "parameter-file-structure")
 def structure(ctx: CheckContext) -> Iterator[Diagnostic]:
     components_only = _read_by_components_only(ctx)
-    loaded: set[str] | None = None
+    loaded: dict[str, set[bool]] | None = None  # file -> loaded with allow_substs (True), without
     for path in sorted(ctx.param_files):
         if path in components_only:
             continue
         for d in ctx.param_files[path].diagnostics:
-            if d.code != "P104" or _templated(d):
+            if d.code != "P104":
                 continue
-            if "${" in d.message:
-                if loaded is None:
-                    loaded = {src.source for _, node in all_nodes(ctx) for src in node.param_sources
-                              if isinstance(src, ResolvedParamFile)}
-                if path not in loaded:
-                    continue  # "${name}_controller:" in a file no node loads: a generator's template
+            if loaded is None and ("${" in d.message or _templated(d)):
+                loaded = {}
+                for _, node in all_nodes(ctx):
+                    for src in node.param_sources:
+                        if isinstance(src, ResolvedParamFile) and src.source:
+                            loaded.setdefault(src.source, set()).add(src.allow_substs)
+            if _templated(d):
+                if loaded is None or loaded.get(path) != {False}:
+                    continue  # loaded with allow_substs, or by no node: substituted, or a template
+                yield replace(d, message=f"{d.message}; the file is loaded without "
+                              "ParameterFile(..., allow_substs=True), so rcl reads the substitution as "
+                              "written and rejects the whole file",
+                              help="load it with ParameterFile(path, allow_substs=True) (XML/YAML: "
+                                   "<param from=... allow_substs=\"true\"/>), or write the key out")
+                continue
+            if "${" in d.message and loaded is not None and path not in loaded:
+                continue  # "${name}_controller:" in a file no node loads: a generator's template
             yield d
 
 

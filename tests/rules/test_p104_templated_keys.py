@@ -53,3 +53,19 @@ def test_a_placeholder_key_in_a_file_no_node_loads_is_a_generators_template(demo
     assert demo_findings(files, ".", "P104") == []
     files["config/arm.yaml"] = GENERATOR_TEMPLATE  # loaded as it is: rcl's _validate_nodename refuses it
     assert [line for line, _ in demo_findings(files, ".", "P104")] == [6]
+
+
+def test_a_templated_key_in_a_file_loaded_without_allow_substs_is_reported(demo_findings: Any) -> None:
+    template = "/$(var robot_name)/driver:\n  ros__parameters:\n    rate: 10\n"
+    for loaded in ("ParameterFile(params, allow_substs=False)", "params"):
+        files = {"launch/a.launch.py": LAUNCH.replace("ParameterFile(params, allow_substs=True)", loaded),
+                 "config/arm.yaml": template}
+        (line, message), = demo_findings(files, "launch/a.launch.py", "P104")
+        assert line == 1
+        assert message.startswith('invalid node key "/$(var robot_name)/driver": ')
+        assert message.endswith("; the file is loaded without ParameterFile(..., allow_substs=True), so rcl "
+                                "reads the substitution as written and rejects the whole file")
+    # the file no node loads is a template of some generator: not judged
+    files = {"launch/a.launch.py": LAUNCH, "config/arm.yaml": "/arm/driver:\n  ros__parameters:\n    rate: 1\n",
+             "config/other.yaml": template}
+    assert demo_findings(files, ".", "P104") == []

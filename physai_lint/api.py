@@ -66,10 +66,9 @@ def _rel(path: str | None, cwd: str) -> str | None:
 
 
 def _effective(project: Project, node: NodeInstance) -> dict[str, Any]:
-    from physai_lint.params.effective import effective_parameters
+    from physai_lint.params.effective import node_parameters
 
-    return effective_parameters(node.fqn, node.param_sources, project.param_files,
-                                composable=node.kind == "composable_node")
+    return node_parameters(node, project.param_files)
 
 
 def _jsonable(value: Any) -> Any:

@@ -13,7 +13,7 @@ def compute_plan(opts: CheckOptions, entry: str, cwd: str | None = None) -> tupl
     from physai_lint.errors import UsageError
     from physai_lint.graph.plan import build_plan
     from physai_lint.graph.system import build_graph
-    from physai_lint.params.effective import effective_parameters
+    from physai_lint.params.effective import node_parameters
 
     cwd = (cwd or os.getcwd()).replace(os.sep, "/")
     target = os.path.normpath(os.path.join(cwd, entry)).replace(os.sep, "/")
@@ -35,9 +35,7 @@ def compute_plan(opts: CheckOptions, entry: str, cwd: str | None = None) -> tupl
 
     def params(node: Any) -> dict[str, Any]:
         if id(node) not in cache:
-            cache[id(node)] = effective_parameters(node.fqn, node.param_sources, project.param_files,
-                                                   composable=node.kind == "composable_node",
-                                                   distro=opts.distro)
+            cache[id(node)] = node_parameters(node, project.param_files, opts.distro)
         return cache[id(node)]  # type: ignore[no-any-return]
 
     return build_plan(launch, graph, params), project.cwd

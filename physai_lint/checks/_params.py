@@ -13,10 +13,9 @@ def effective(ctx: CheckContext, node: NodeInstance) -> dict[str, Any]:
     cache = ctx.options.setdefault("_effective", {})
     key = id(node)
     if key not in cache:
-        from physai_lint.params.effective import effective_parameters
+        from physai_lint.params.effective import node_parameters
 
-        cache[key] = effective_parameters(node.fqn, node.param_sources, ctx.param_files,
-                                          composable=node.kind == "composable_node", distro=ctx.distro)
+        cache[key] = node_parameters(node, ctx.param_files, ctx.distro)
     return cache[key]  # type: ignore[no-any-return]
 
 

@@ -73,11 +73,13 @@ def not_installed(ctx: CheckContext) -> Iterator[Diagnostic]:
 @rule("P103", "parameter-file-no-match")
 def no_match(ctx: CheckContext) -> Iterator[Diagnostic]:
     from physai_lint.params.effective import matching_keys
+    from physai_lint.params.match import unnamed_component
 
     loaders: dict[str, list[tuple[Any, Any]]] = {}
     # every node that reads the file, also through a file a substitution derives from it
     # (RewrittenYaml) or under a condition that is false with the default arguments
     readers: dict[str, list[Any]] = {}
+    unnamed: list[tuple[Any, Any, str]] = []
     for _, node in all_nodes(ctx):
         for src in node.param_sources:
             if not isinstance(src, ResolvedParamFile) or src.status != "ok":
@@ -85,21 +87,53 @@ def no_match(ctx: CheckContext) -> Iterator[Diagnostic]:
             path = src.source if src.source in ctx.param_files else src.derived_from
             if path not in ctx.param_files:
                 continue
+            if _by_launch_ros(node, src) and unnamed_component(node):
+                if node.active is not False:
+                    unnamed.append((node, src, path))
+                continue  # gets the "/**" entries only, whatever the other keys say
             readers.setdefault(path, []).append((node, src))
             if node.active is not False and src.source == path and not name_rejected(node.name, node.namespace):
                 loaders.setdefault(path, []).append((node, src))
+    yield from _unnamed_components(ctx, unnamed)
     for path, users in sorted(loaders.items()):
         model = ctx.param_files[path]
         if not model.ok or not model.blocks:
             continue
-        if any(n.fqn is None for n, _ in users):
+        if any(_file_name(n, s) is None for n, s in users):
             continue
-        keys = {id(n): matching_keys(n.fqn, model, _by_launch_ros(n, s)) for n, s in users}
+        keys = {id(n): matching_keys(_file_name(n, s), model, _by_launch_ros(n, s)) for n, s in users}
         if not any(keys.values()):
             yield _whole_file(path, model, users)
         elif all(n.fqn is not None for n, _ in readers[path]):
             yield from _stray_keys(path, model, users, keys, readers[path])
     yield from _rewritten_no_match(ctx, readers)
+
+
+def _unnamed_components(ctx: CheckContext, unnamed: list[tuple[Any, Any, str]]) -> Iterator[Diagnostic]:
+    """A component loaded with no name given a parameter file with no "/**" entry: launch_ros
+    sends no node name and ``to_parameters_list`` keeps only the file's "**" entries (warning
+    "node name not provided to launch; parameter files will not apply"), so it gets nothing from
+    the file, whatever key names it."""
+    seen: set[tuple[Any, str]] = set()
+    for node, src, path in unnamed:
+        model = src.model if src.source != path and src.model is not None else ctx.param_files[path]
+        if not model.ok or not model.blocks or model.flat is not None or (src.span, path) in seen:
+            continue
+        if any(b.key.lstrip("/") == "**" and not b.nested for b in model.blocks):
+            continue
+        seen.add((src.span, path))
+        what = f'"{_rel(path)}"' if model is ctx.param_files[path] else f'the file written from "{_rel(path)}"'
+        keys = ", ".join(f'"{k}"' for k in dict.fromkeys(b.key for b in model.blocks))
+        default = f' (name="{node.name}")' if node.name else ""
+        yield Diagnostic(
+            "P103", node.spans.get("executable", src.span),
+            f'component "{node.executable}" is loaded without a name, so launch_ros applies only the "/**" '
+            f"entries of its parameter files, and {what} has none (its keys: {keys}): the component gets "
+            "none of its parameters from it and runs on its defaults",
+            help=f"give the ComposableNode a name{default} so that launch_ros applies the entry keyed by it, "
+                 'or key the entries "/**:"',
+            related=(Related(src.span, "the file is given here"),),
+            key=f"{_rel(path)}:unnamed:{node.executable}")
 
 
 def _rewritten_no_match(ctx: CheckContext, readers: dict[str, list[Any]]) -> Iterator[Diagnostic]:
@@ -111,9 +145,9 @@ def _rewritten_no_match(ctx: CheckContext, readers: dict[str, list[Any]]) -> Ite
 
     for path, users in sorted(readers.items()):
         active = [(n, s) for n, s in users if n.active is not False]
-        if not active or any(s.source == path or s.model is None or n.fqn is None for n, s in active):
+        if not active or any(s.source == path or s.model is None or _file_name(n, s) is None for n, s in active):
             continue
-        if any(matching_keys(n.fqn, s.model, _by_launch_ros(n, s)) for n, s in active):
+        if any(matching_keys(_file_name(n, s), s.model, _by_launch_ros(n, s)) for n, s in active):
             continue
         model = active[0][1].model
         mine = [(n, s) for n, s in active if s.model is model]
@@ -153,6 +187,14 @@ def _by_launch_ros(node: Any, src: Any) -> bool:
     its exact name match) rather than rcl (wildcard keys; a container's file a component gets
     through forward_global_arguments)."""
     return bool(node.kind == "composable_node" and src.origin != "forwarded")
+
+
+def _file_name(node: Any, src: Any) -> str | None:
+    """The name the file's keys are matched against for the node: its full name, or "" for a
+    component launch_ros loads with no name (only "/**" entries apply, ``unnamed_component``)."""
+    from physai_lint.params.match import unnamed_component
+
+    return "" if _by_launch_ros(node, src) and unnamed_component(node) else node.fqn
 
 
 def _whole_file(path: str, model: Any, users: list[tuple[Any, Any]], written: bool = False) -> Diagnostic:
@@ -205,7 +247,7 @@ def _stray_keys(path: str, model: Any, users: list[tuple[Any, Any]], keys: dict[
     from physai_lint.params.match import explain_for, key_help
 
     matched = {id(b) for n, src in readers
-               for b in keys.get(id(n)) or matching_keys(n.fqn, model, _by_launch_ros(n, src))}
+               for b in keys.get(id(n)) or matching_keys(_file_name(n, src), model, _by_launch_ros(n, src))}
     yield from _wildcards_for_components(path, model, users, matched)
     # nodes that load the file and get no key of their own from it (wildcard keys aside)
     unserved: dict[str, tuple[Any, Any]] = {}

@@ -144,9 +144,11 @@ def _ops_by_node_key(model: ParamFileModel) -> list[tuple[str, list[tuple]]]:
 
 def effective_parameters(node_fqn: str | None, sources: list[ParamSourceR],
                          files: Mapping[str, ParamFileModel], composable: bool = False,
-                         distro: str = "humble") -> dict[str, EffectiveParam]:
+                         distro: str = "humble", named: bool = True) -> dict[str, EffectiveParam]:
+    """``named``: False for a component loaded with no name (``params.match.unnamed_component``):
+    its own parameter files give it their "/**" entries only."""
     if composable:
-        return _effective_composable(node_fqn, sources, files, distro)
+        return _effective_composable(node_fqn, sources, files, distro, named)
     rcl = RclParams()
     uncertain = False
     for src in sources:
@@ -224,8 +226,16 @@ def _launch_kind(value: Any) -> str | None:
     return None
 
 
+def node_parameters(node: Any, files: Mapping[str, ParamFileModel], distro: str = "humble"
+                    ) -> dict[str, EffectiveParam]:
+    """``effective_parameters`` of a resolved node (``NodeInstance``)."""
+    composable = node.kind == "composable_node"
+    return effective_parameters(node.fqn, node.param_sources, files, composable, distro,
+                                named=not composable or node.name_explicit)
+
+
 def _effective_composable(fqn: str | None, sources: list[ParamSourceR],
-                          files: Mapping[str, ParamFileModel], distro: str = "humble"
+                          files: Mapping[str, ParamFileModel], distro: str = "humble", named: bool = True
                           ) -> dict[str, EffectiveParam]:
     out: dict[str, EffectiveParam] = {}
     uncertain = False
@@ -268,10 +278,11 @@ def _effective_composable(fqn: str | None, sources: list[ParamSourceR],
                     put(prm.name, prm.launch_value, _launch_kind(prm.launch_value), prm.value_span,
                         model.path, None)
                 continue
-            blocks = matching_keys(fqn, model, composable=True) if fqn is not None else [
+            own = fqn if named else ""  # launch_ros matches "" (no name sent) against "/**" only
+            blocks = matching_keys(own, model, composable=True) if own is not None else [
                 b for b in model.blocks if b.key.lstrip("/") == "**" and not b.nested
                 and b.params_key_exact]
-            if fqn is None and any(not b.nested and b.key.lstrip("/") != "**" and "*" not in b.key
+            if own is None and any(not b.nested and b.key.lstrip("/") != "**" and "*" not in b.key
                                    for b in model.blocks):
                 uncertain = True
             # within one file the exact key beats "**" whatever their order

@@ -50,8 +50,20 @@ def composable_key_matches(key: str, fqn: str, nested: bool = False) -> bool:
     return k == "**" or k == fqn.lstrip("/")
 
 
+def unnamed_component(node: Any) -> bool:
+    """A composable node loaded with no name: launch_ros sends an empty ``node_name`` and
+    ``to_parameters_list`` applies only the "/**" entries of its parameter files (it warns "node
+    name not provided to launch; parameter files will not apply"); the node takes its
+    constructor's name only once loaded."""
+    return node.kind == "composable_node" and not node.name_explicit
+
+
 def explain_for(key: str, node: Any) -> str:
     """``explain_no_match`` or, for a composable node, ``explain_composable_no_match``."""
+    if unnamed_component(node):
+        return (f'the component is loaded without a name, so launch_ros applies only the "/**" entries '
+                f'of its parameter files, not "{key}" (it warns "node name not provided to launch; '
+                f'parameter files will not apply")')
     if node.kind == "composable_node":
         return explain_composable_no_match(key, node.fqn)
     return explain_no_match(key, node.fqn)
@@ -60,6 +72,10 @@ def explain_for(key: str, node: Any) -> str:
 def key_help(node: Any, whole: bool) -> str:
     """The help of a P103 finding: the keys that would reach ``node``."""
     what = "the file" if whole else "it"
+    if unnamed_component(node):
+        return (f'give the ComposableNode a name (name="{node.name}") so that launch_ros applies the '
+                f'entries keyed by it, or key {what} "/**:"' if node.name else
+                f'give the ComposableNode a name, or key {what} "/**:"')
     if node.kind == "composable_node":  # launch_ros honours "/**" and the exact name only
         return f'key {what} by the component\'s full name, "{node.fqn.lstrip("/")}:", or use "/**:"'
     full = node.fqn if whole else node.fqn.lstrip("/")

@@ -1,5 +1,5 @@
 """Parameter files: P101 parameter-file-missing, P102 parameter-file-not-installed,
-P103 parameter-file-no-match, P104 parameter-file-structure, P106 mixed-type-array."""
+P103 parameter-file-no-match, P104 parameter-file-structure, P106 mixed-type-array, P115 param-rewrite-no-effect."""
 from __future__ import annotations
 
 import os
@@ -7,7 +7,7 @@ from collections.abc import Iterator
 from dataclasses import replace
 from typing import Any
 
-from physai_lint.checks._util import RELATIVE_PATH, all_nodes, switched_off_by, where
+from physai_lint.checks._util import RELATIVE_PATH, all_nodes, once, switched_off_by, where
 from physai_lint.checks._util import relpath as _rel
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.interfaces.naming import name_note
@@ -445,3 +445,30 @@ def mixed_array(ctx: CheckContext) -> Iterator[Diagnostic]:
                         help=("an empty list has no type for launch to give it: leave the parameter out, "
                               "or give it a value of its type (e.g. [\"\"], [0])" if empty else
                               "make every item the same type (e.g. all floats: 1.0, 2.5)"), key=prm.name)
+
+
+@rule("P115", "param-rewrite-no-effect")
+def rewrite_no_effect(ctx: CheckContext) -> Iterator[Diagnostic]:
+    given: set[str] | None = None
+    for span, key, source in once(ctx, "unused_rewrites", lambda e: (e[0], e[1])):
+        if given is None:
+            given = _given_by_launch(ctx)
+        if key.rpartition(".")[2] in given:
+            continue  # given to a node another way as well (nav2: autostart to the lifecycle manager)
+        yield Diagnostic(
+            "P115", span,
+            f'param_rewrites key "{key}" matches no key of "{_rel(source)}": RewrittenYaml replaces only '
+            "keys the file has (and adds dotted paths through ros__parameters), so it writes this value "
+            "nowhere and no node gets it",
+            help=f'add "{key}:" (any value) under the ros__parameters of the node that needs it in '
+                 f'"{_rel(source)}", or give the full path ("<node>.ros__parameters.{key}")',
+            key=key)
+
+
+def _given_by_launch(ctx: CheckContext) -> set[str]:
+    """Names of the parameters launch files give some node directly (a dict, ``<param>``,
+    ``SetParameter``): a rewrite of such a name that writes nothing repeats a value given anyway."""
+    from physai_lint.resolve.model import ResolvedParamDict
+
+    return {rp.name.rpartition(".")[2] for _, node in all_nodes(ctx) for src in node.param_sources
+            if isinstance(src, ResolvedParamDict) for rp in src.params}

@@ -95,6 +95,8 @@ class Evaluator:
         # a Command whose parts run together into one word (``glued_words``): (where, the left
         # word, the right word, the command line)
         self.on_glued_command: Callable[[Span | None, str, str, str], None] | None = None
+        # a RewrittenYaml param_rewrites key that rewrites nothing: (its span, the key, the source)
+        self.on_unused_rewrite: Callable[[Span, str, str], None] | None = None
         self.on_dirname: Callable[[Span | None, Scope], None] | None = None
         # temporary files that substitutions (nav2_common RewrittenYaml ...) write: path -> file
         self.virtual: dict[str, Any] = {}

@@ -112,6 +112,7 @@ class Instantiator:
         self.ev = Evaluator(packages, self._on_read, self._on_package, self._on_bad_condition)
         self.ev.on_bad_expression = self._on_bad_expression
         self.ev.on_glued_command = self._on_glued_command
+        self.ev.on_unused_rewrite = self._on_unused_rewrite
         self.ev.on_dirname = self._on_dirname
         self.nodes = NodeBuilder(self)
         self.visited: dict[str, bool | None] = {}
@@ -180,6 +181,10 @@ class Instantiator:
     def _on_bad_expression(self, span: Span | None, text: str, why: str) -> None:
         if span is not None and self.frame.active is not False:
             self.result.expression_errors.append((span, text, why))
+
+    def _on_unused_rewrite(self, span: Span, key: str, source: str) -> None:
+        if self.frame.active is not False:
+            self.result.unused_rewrites.append((span, key, source))
 
     def _on_glued_command(self, span: Span | None, left: str, right: str, line: str) -> None:
         if span is not None and self.frame.active is not False:
@@ -602,7 +607,7 @@ class Instantiator:
         instead of waiting for the cyclic collector."""
         ev = self.ev
         ev.on_read = ev.on_package = ev.on_bad_condition = ev.on_dirname = ev.on_bad_expression = None
-        ev.on_glued_command = None
+        ev.on_glued_command = ev.on_unused_rewrite = None
         self.nodes.inst = None  # type: ignore[assignment]
         self.deferred.clear()
         self.handlers.clear()

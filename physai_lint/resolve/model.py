@@ -269,6 +269,8 @@ class LaunchResult:
     # Command / $(command) lines whose parts run two words together: (span, left word, right
     # word, the command line)
     glued_commands: list[tuple[Span, str, str, str]] = field(default_factory=list)
+    # RewrittenYaml param_rewrites keys that rewrite nothing: (the key's span, the key, source file)
+    unused_rewrites: list[tuple[Span, str, str]] = field(default_factory=list)
     # $(dirname)/ThisLaunchFileDir evaluated after an include: (span, got, the file's own dir)
     dirname_traps: list[tuple[Span, str, str]] = field(default_factory=list)
     # Start delay of nodes started by timers (node id -> seconds, None when unknown)

@@ -51,6 +51,9 @@ class VirtualFile:
     source: str | None  # the workspace file it was made from
     line_origin: Callable[[int, int], Span | None] | None = None
     models: dict[str, ParamFileModel | None] = field(default_factory=dict)
+    # RewrittenYaml's param_rewrites keys that changed nothing: no key of the source has the name,
+    # no path is the dotted key, and it is no path through "ros__parameters" (add_params)
+    unused_rewrites: tuple[str, ...] = ()
 
     def span_of(self, line: int, col: int) -> Span:
         hit = self.origin.get((line, col))
@@ -353,6 +356,7 @@ def _rewritten_yaml(ev: Evaluator, p: v.RewrittenYaml, path: str, params: Any, k
         for k, span in values[1].items():
             rewrite_spans["=" + k] = span
         rw = _Rewriter(p.convert_types, spans, rewrite_spans)
+        unused = _unused_rewrites(rw, data, params[0])
         try:
             rw.substitute_params(data, params[0])
             rw.add_params(data, params[0])
@@ -367,12 +371,30 @@ def _rewritten_yaml(ev: Evaluator, p: v.RewrittenYaml, path: str, params: Any, k
             dumped = yaml.dump(data, Dumper=_Dumper)
         except yaml.YAMLError:
             return None
-        out = VirtualFile(vpath, dumped, {}, fallback, virtual.source if virtual else file)
+        out = VirtualFile(vpath, dumped, {}, fallback, virtual.source if virtual else file,
+                          unused_rewrites=unused)
         _map_positions(out, dumped, data, spans)
         return out
 
     out = _shared(ev, key, make)
+    if out is not None and ev.on_unused_rewrite is not None:
+        for name in out.unused_rewrites:
+            span = params[1].get(name)
+            if span is not None:
+                ev.on_unused_rewrite(span, name, out.source or file)
     return out.path if out is not None else None
+
+
+def _unused_rewrites(rw: _Rewriter, data: Any, rewrites: dict[str, str]) -> tuple[str, ...]:
+    """The ``param_rewrites`` keys RewrittenYaml will not write into ``data`` (before rewriting):
+    ``substitute_params`` replaces keys of that name at any depth and existing dotted paths,
+    ``add_params`` adds only missing paths through "ros__parameters" (navigation2#3111)."""
+    if not rewrites or not isinstance(data, dict):
+        return ()
+    names = {key for _, key in rw.leaf_keys(data)}
+    paths = rw.pathify(data)
+    return tuple(k for k in rewrites if k not in names and k not in paths
+                 and "ros__parameters" not in k.split("."))
 
 
 def _cached(cache: OrderedDict[Any, Any], size: int, key: Any, make: Callable[[], Any]) -> Any:

@@ -10,9 +10,10 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import Any
 
+from physai_lint.checks._util import run_memo
 from physai_lint.checks.base import CheckContext
 from physai_lint.model.span import Span
-from physai_lint.resolve.model import ResolvedParam, ResolvedParamDict, ResolvedParamFile
+from physai_lint.resolve.model import ResolvedParamDict, ResolvedParamFile
 
 
 @dataclass(frozen=True)
@@ -23,7 +24,10 @@ class ParamString:
     span: Span
     name: str  # the parameter's name ("a.b" for nested keys)
     whose: str  # 'of /camera' (a launch file gives it), 'for "/camera" in a parameter file'
-    packages: frozenset[str] = frozenset()  # of the nodes given it (for a file: the nodes loading it)
+    # the packages of the nodes given it: every node a launch dict reaches, for a file's block the
+    # nodes whose name it matches
+    packages: frozenset[str] = frozenset()
+    item: bool = False  # an item of a list
 
     @property
     def base(self) -> str:
@@ -31,61 +35,80 @@ class ParamString:
         return self.name.rpartition(".")[2]
 
 
-def path_values(rp: ResolvedParam) -> Iterator[tuple[str, Span]]:
+def _strings(value: Any, span: Span, item_spans: Any) -> Iterator[tuple[str, Span, bool]]:
     """The string values of a parameter (each item of a list) with where each is written."""
-    yield from _strings(rp.value, rp.span, rp.item_spans)
-
-
-def _strings(value: Any, span: Span, item_spans: Any) -> Iterator[tuple[str, Span]]:
     if isinstance(value, str):
-        yield value, span
+        yield value, span, False
     elif isinstance(value, list):
         spans = item_spans if item_spans and len(item_spans) == len(value) else None
         for i, item in enumerate(value):
             if isinstance(item, str):
-                yield item, spans[i] if spans else span
+                yield item, spans[i] if spans else span, True
 
 
-def parameter_strings(ctx: CheckContext) -> Iterator[ParamString]:
+def parameter_strings(ctx: CheckContext) -> list[ParamString]:
     """Every string parameter value a launch file gives a node (a dict, ``<param>``,
     ``SetParameter``), then every one in a parameter file (not a file a substitution rewrites: its
-    source is one of them), each (position, value) once."""
-    seen: set[tuple[Span, str]] = set()
-    loaders: dict[str, set[str]] = {}  # parameter file -> packages of the nodes loading it
+    source is one of them), each (position, value) once. Listed once per run (U101, U104, P114)."""
+    return run_memo(ctx.options, "_param_strings", ctx.launches, lambda: _parameter_strings(ctx))
+
+
+def _parameter_strings(ctx: CheckContext) -> list[ParamString]:
+    given: dict[tuple[Span, str], tuple[str, str, set[str], bool]] = {}
+    loaders: dict[str, list[Any]] = {}  # parameter file -> the nodes loading it
     for launch in ctx.launches:
         for node in launch.nodes:
             for source in node.param_sources:
                 if isinstance(source, ResolvedParamFile):
-                    for path in (source.source, source.derived_from):
-                        if path and node.package:
-                            loaders.setdefault(path, set()).add(node.package)
+                    for path in {source.source, source.derived_from} - {None}:
+                        loaders.setdefault(path, []).append(node)  # type: ignore[index]
+                    continue
                 if not isinstance(source, ResolvedParamDict):
                     continue
                 for rp in source.params:
-                    for value, span in path_values(rp):
-                        if (span, value) not in seen:
-                            seen.add((span, value))
-                            yield ParamString(value, span, rp.name, f"of {node.fqn or node.executable}",
-                                              frozenset({node.package} if node.package else ()))
+                    for value, span, item in _strings(rp.value, rp.span, rp.item_spans):
+                        entry = given.setdefault((span, value), (rp.name, f"of {node.fqn or node.executable}",
+                                                                 set(), item))
+                        if node.package:
+                            entry[2].add(node.package)
+    out = [ParamString(value, span, name, whose, frozenset(pkgs), item)
+           for (span, value), (name, whose, pkgs, item) in given.items()]
+    seen = set(given)
     for path in sorted(ctx.param_files):
-        users = frozenset(loaders.get(path, ()))
-        for block in ctx.param_files[path].blocks:
+        model = ctx.param_files[path]
+        users = [(n, _blocks_reaching(n, model)) for n in loaders.get(path, ())]
+        for block in model.blocks:
+            pkgs = frozenset(n.package for n, reached in users if n.package and id(block) in reached)
             for prm in block.params:
-                for value, span in _strings(prm.value, prm.value_span, prm.item_spans):
+                for value, span, item in _strings(prm.value, prm.value_span, prm.item_spans):
                     if (span, value) not in seen:
                         seen.add((span, value))
-                        yield ParamString(value, span, prm.name, f'for "{block.key}" in a parameter file', users)
+                        out.append(ParamString(value, span, prm.name, f'for "{block.key}" in a parameter file',
+                                               pkgs, item))
+    return out
+
+
+def _blocks_reaching(node: Any, model: Any) -> set[int]:
+    """The blocks of a parameter file that give ``node`` its parameters (by ``id``); none when
+    its name is not known."""
+    from physai_lint.params.effective import matching_keys
+    from physai_lint.params.match import unnamed_component
+
+    composable = node.kind == "composable_node"
+    fqn = "" if composable and unnamed_component(node) else node.fqn
+    return set() if fqn is None else {id(b) for b in matching_keys(fqn, model, composable)}
 
 
 def package_url(value: str) -> tuple[str, str] | None:
     """(package, path inside its share directory) of a ``package://<package>/<path>`` URL, as
     camera_info_manager (``parseURL``: the scheme in any case, a non-empty name, something after
-    its "/") and resource_retriever read it; None for anything else, and for a URL holding "$"
-    (camera_info_manager's ``${NAME}``, an unexpanded substitution): its text is not yet known."""
-    if value[:10].lower() != "package://" or "$" in value:
+    its "/") and resource_retriever read it; None for anything else, and for a package name
+    holding "$" (an unexpanded substitution). The path may hold camera_info_manager's
+    ``${NAME}``: it is not known here."""
+    if value[:10].lower() != "package://":
         return None
     pkg, slash, rel = value[10:].partition("/")
-    if not pkg or not slash or not rel:
+    if not pkg or not slash or not rel or "$" in pkg:
         return None
     return pkg, rel
 

@@ -223,8 +223,8 @@ def _parameter_files(ctx: CheckContext, seen: set[tuple[object, str]]) -> Iterat
         at_package = package_url(ps.value) if path is None else None
         if at_package is not None:
             pkg, rel = at_package
-            if not root or ctx.packages.workspace_package(pkg) is None:
-                continue
+            if not root or "$" in rel or ctx.packages.workspace_package(pkg) is None:
+                continue  # "${NAME}.yaml": camera_info_manager puts the camera's name there
             path = f"{root}/{pkg}/share/{pkg}/{posixpath.normpath(rel)}"
         what = f'given as parameter "{ps.name}" {ps.whose}'
         if path is not None:

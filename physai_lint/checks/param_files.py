@@ -111,9 +111,9 @@ def no_match(ctx: CheckContext) -> Iterator[Diagnostic]:
 
 def _unnamed_components(ctx: CheckContext, unnamed: list[tuple[Any, Any, str]]) -> Iterator[Diagnostic]:
     """A component loaded with no name given a parameter file with no "/**" entry: launch_ros
-    sends no node name and ``to_parameters_list`` keeps only the file's "**" entries (warning
-    "node name not provided to launch; parameter files will not apply"), so it gets nothing from
-    the file, whatever key names it."""
+    sends no node name and ``to_parameters_list`` keeps only the file's "**" entries (with no
+    namespace it warns "node name not provided to launch; parameter files will not apply"), so
+    it gets nothing from the file, whatever key names it."""
     seen: set[tuple[Any, str]] = set()
     for node, src, path in unnamed:
         model = src.model if src.source != path and src.model is not None else ctx.param_files[path]
@@ -125,14 +125,15 @@ def _unnamed_components(ctx: CheckContext, unnamed: list[tuple[Any, Any, str]]) 
         what = f'"{_rel(path)}"' if model is ctx.param_files[path] else f'the file written from "{_rel(path)}"'
         keys = ", ".join(f'"{k}"' for k in dict.fromkeys(b.key for b in model.blocks))
         default = f' (name="{node.name}")' if node.name else ""
+        span = node.spans.get("executable", src.span)
         yield Diagnostic(
-            "P103", node.spans.get("executable", src.span),
+            "P103", span,
             f'component "{node.executable}" is loaded without a name, so launch_ros applies only the "/**" '
             f"entries of its parameter files, and {what} has none (its keys: {keys}): the component gets "
             "none of its parameters from it and runs on its defaults",
             help=f"give the ComposableNode a name{default} so that launch_ros applies the entry keyed by it, "
                  'or key the entries "/**:"',
-            related=(Related(src.span, "the file is given here"),),
+            related=(Related(src.span, "the file is given here"),) if src.span != span else (),
             key=f"{_rel(path)}:unnamed:{node.executable}")
 
 
@@ -317,11 +318,11 @@ def structure(ctx: CheckContext) -> Iterator[Diagnostic]:
                         if isinstance(src, ResolvedParamFile) and src.source:
                             loaded.setdefault(src.source, set()).add(src.allow_substs)
             if _templated(d):
-                if loaded is None or loaded.get(path) != {False}:
-                    continue  # loaded with allow_substs, or by no node: substituted, or a template
-                yield replace(d, message=f"{d.message}; the file is loaded without "
+                if loaded is None or False not in loaded.get(path, ()):
+                    continue  # loaded with allow_substs only, or by no node: substituted, or a template
+                yield replace(d, message=f"{d.message}; a node loads the file without "
                               "ParameterFile(..., allow_substs=True), so rcl reads the substitution as "
-                              "written and rejects the whole file",
+                              "written and rejects the whole file for it",
                               help="load it with ParameterFile(path, allow_substs=True) (XML/YAML: "
                                    "<param from=... allow_substs=\"true\"/>), or write the key out")
                 continue

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from physai_lint.checks._urls import parameter_strings
+from physai_lint.checks._urls import package_url, parameter_strings
 from physai_lint.checks.base import CheckContext, rule
 from physai_lint.model.findings import Diagnostic
 
@@ -28,7 +28,7 @@ CAMERA_INFO_MANAGER_USERS = frozenset({"usb_cam", "v4l2_camera", "gscam", "image
 @rule("P114", "invalid-camera-info-url")
 def invalid_camera_info_url(ctx: CheckContext) -> Iterator[Diagnostic]:
     for ps in parameter_strings(ctx):
-        if ps.base not in _NAMES or not any(_uses_camera_info_manager(ctx, p) for p in sorted(ps.packages)):
+        if ps.item or ps.base not in _NAMES or not any(_uses_camera_info_manager(ctx, p) for p in sorted(ps.packages)):
             continue
         problem = _url_problem(ps.value)
         if problem is None:
@@ -55,11 +55,13 @@ def _url_problem(value: str) -> tuple[str, str] | None:
     if value == "" or "$" in value:
         return None
     low = value.lower()
-    if low.startswith(("file:///", "flash:///")):
+    if low.startswith("file:///"):
         return None
+    if low.startswith("flash:///"):
+        return ('a flash URL, which camera_info_manager recognises but does not read ("reading from '
+                'flash not implemented yet")', 'use "file:///<absolute path>" or "package://<package>/<path>"')
     if low.startswith("package://"):
-        pkg, slash, rel = value[10:].partition("/")
-        if pkg and slash and rel:
+        if package_url(value) is not None:
             return None
         return ('a package URL with no package name or no file after it',
                 'write "package://<package>/<path inside its share directory>"')

@@ -298,6 +298,12 @@ def _wrong_type_text(f: TypeFact) -> tuple[str, str]:
                  "pass True or False; to choose at launch time, use two actions with "
                  "IfCondition / UnlessCondition")
         return message, help_
+    if f.kind == "typed-bool":
+        message = (f"{f.call} is given {f.value}, a {f.type}: launch accepts only a bool or substitutions "
+                   "there (normalize_typed_substitution) and raises \"TypeError: value=... is not an "
+                   "instance of <class 'bool'>\" when the description is built")
+        return message, ("pass True or False; to choose at launch time, pass a substitution "
+                         "(respawn=LaunchConfiguration('respawn'), whose value must be true or false)")
     if f.kind == "plain-number":
         message = (f"{f.call} is given {f.value}, a {f.type}: launch keeps it as is and compares it "
                    "with a number when the process exits and is respawned, which raises "

@@ -28,7 +28,7 @@ def invalid_condition_value(ctx: CheckContext) -> Iterator[Diagnostic]:
             yield Diagnostic(
                 "L109", span,
                 f'respawn gets "{value}", which is not a YAML boolean (true/false, yes/no, on/off); launch '
-                f"types it with yaml.safe_load when it starts the process (ExecuteLocal.execute), so the "
+                f"types it with yaml.safe_load when it starts the process (ExecuteLocal.prepare), so the "
                 f"launch fails with ValueError: \"Cannot convert value '{value}' to '<class 'bool'>'\"",
                 help='pass "true" or "false" (IfCondition also takes "1"/"0", respawn does not), or a bool '
                      "literal in Python (respawn=True)",

@@ -52,9 +52,9 @@ def composable_key_matches(key: str, fqn: str, nested: bool = False) -> bool:
 
 def unnamed_component(node: Any) -> bool:
     """A composable node loaded with no name: launch_ros sends an empty ``node_name`` and
-    ``to_parameters_list`` applies only the "/**" entries of its parameter files (it warns "node
-    name not provided to launch; parameter files will not apply"); the node takes its
-    constructor's name only once loaded."""
+    ``to_parameters_list`` applies only the "/**" entries of its parameter files (with no
+    namespace it warns "node name not provided to launch; parameter files will not apply"); the
+    node takes its constructor's name only once loaded."""
     return node.kind == "composable_node" and not node.name_explicit
 
 
@@ -62,8 +62,7 @@ def explain_for(key: str, node: Any) -> str:
     """``explain_no_match`` or, for a composable node, ``explain_composable_no_match``."""
     if unnamed_component(node):
         return (f'the component is loaded without a name, so launch_ros applies only the "/**" entries '
-                f'of its parameter files, not "{key}" (it warns "node name not provided to launch; '
-                f'parameter files will not apply")')
+                f'of its parameter files, not "{key}"')
     if node.kind == "composable_node":
         return explain_composable_no_match(key, node.fqn)
     return explain_no_match(key, node.fqn)

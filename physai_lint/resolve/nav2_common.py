@@ -330,7 +330,14 @@ def rewritten_yaml(ev: Evaluator, p: v.RewrittenYaml, scope: Scope) -> str | Non
            root, p.convert_types)
     if key not in memo:
         memo[key] = _rewritten_yaml(ev, p, path, params, keys, values, root)
-    return memo[key]
+    written = memo[key]
+    vf = ev.virtual.get(written) if written is not None else None
+    if vf is not None and ev.on_unused_rewrite is not None:  # every evaluation: the first may be inactive
+        for name in vf.unused_rewrites:
+            span = params[1].get(name)
+            if span is not None:
+                ev.on_unused_rewrite(span, name, vf.source or path)
+    return written
 
 
 def _rewritten_yaml(ev: Evaluator, p: v.RewrittenYaml, path: str, params: Any, keys: Any, values: Any,
@@ -377,11 +384,6 @@ def _rewritten_yaml(ev: Evaluator, p: v.RewrittenYaml, path: str, params: Any, k
         return out
 
     out = _shared(ev, key, make)
-    if out is not None and ev.on_unused_rewrite is not None:
-        for name in out.unused_rewrites:
-            span = params[1].get(name)
-            if span is not None:
-                ev.on_unused_rewrite(span, name, out.source or file)
     return out.path if out is not None else None
 
 

@@ -519,7 +519,7 @@ class NodeBuilder:
                            f"{self.inst.frame.file}#{a.id}", honours, a.condition)
 
     def _respawn(self, value: v.Value | None, scope: Scope, span: Span | None = None) -> None:
-        """``respawn=`` as text or substitutions: ``ExecuteLocal.execute`` types what it substitutes
+        """``respawn=`` as text or substitutions: ``ExecuteLocal.prepare`` types what it substitutes
         with ``perform_typed_substitution(context, respawn, bool)`` (yaml.safe_load), which raises
         ValueError for anything but a YAML boolean ('0' and '1' included, unlike IfCondition).
         ``span``: the ``respawn=`` argument, where the value itself is written elsewhere (a

@@ -80,3 +80,14 @@ def test_respawn_takes_a_yaml_boolean_when_the_process_starts(demo_findings: Any
 def test_a_respawn_bool_literal_is_typed_already(demo_findings: Any) -> None:
     text = RESPAWN.replace("respawn=use_respawn", "respawn=True").replace("VALUE", "0")
     assert demo_findings({"launch/a.launch.py": text}, "launch/a.launch.py", "L109") == []
+
+
+
+def test_a_respawn_string_literal_fails_when_the_action_is_built(demo_findings: Any) -> None:
+    # normalize_typed_substitution: a str is a scalar, and not a bool -> TypeError in Node()
+    text = RESPAWN.replace("respawn=use_respawn),", "respawn='true'),").replace("VALUE", "true")
+    assert demo_findings({"launch/a.launch.py": text}, "launch/a.launch.py", "L109") == []
+    found = demo_findings({"launch/a.launch.py": text}, "launch/a.launch.py", "L008")
+    assert [line for line, _ in found] == [12, 13]  # the Node and the ExecuteProcess
+    assert found[0][1].startswith("Node(respawn=...) is given 'true', a string: launch accepts only a bool or "
+                              "substitutions there (normalize_typed_substitution)")

@@ -63,9 +63,18 @@ def test_a_templated_key_in_a_file_loaded_without_allow_substs_is_reported(demo_
         (line, message), = demo_findings(files, "launch/a.launch.py", "P104")
         assert line == 1
         assert message.startswith('invalid node key "/$(var robot_name)/driver": ')
-        assert message.endswith("; the file is loaded without ParameterFile(..., allow_substs=True), so rcl "
-                                "reads the substitution as written and rejects the whole file")
+        assert message.endswith("; a node loads the file without ParameterFile(..., allow_substs=True), so rcl "
+                                "reads the substitution as written and rejects the whole file for it")
     # the file no node loads is a template of some generator: not judged
     files = {"launch/a.launch.py": LAUNCH, "config/arm.yaml": "/arm/driver:\n  ros__parameters:\n    rate: 1\n",
              "config/other.yaml": template}
     assert demo_findings(files, ".", "P104") == []
+
+
+def test_one_node_loading_the_template_as_a_plain_path_is_enough(demo_findings: Any) -> None:
+    both = LAUNCH.replace("parameters=[ParameterFile(params, allow_substs=True)]),",
+                          "parameters=[ParameterFile(params, allow_substs=True)]),\n"
+                          "        Node(package='demo_nodes_cpp', executable='talker', name='other', parameters=[params]),")
+    files = {"launch/a.launch.py": both,
+             "config/arm.yaml": "/$(var robot_name)/driver:\n  ros__parameters:\n    rate: 10\n"}
+    assert [line for line, _ in demo_findings(files, "launch/a.launch.py", "P104")] == [1]

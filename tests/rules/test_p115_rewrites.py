@@ -56,3 +56,33 @@ def test_a_key_the_file_does_not_have(demo_findings: Any) -> None:
 ])
 def test_rewrites_that_write_or_repeat_a_value(demo_findings: Any, rewrite: str) -> None:
     assert _found(demo_findings, rewrite) == []
+
+
+GROUPS = """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, GroupAction
+from launch.conditions import IfCondition, UnlessCondition
+from launch.substitutions import LaunchConfiguration, PathJoinSubstitution
+from launch_ros.actions import Node
+from launch_ros.substitutions import FindPackageShare
+from nav2_common.launch import RewrittenYaml
+
+
+def generate_launch_description():
+    params = RewrittenYaml(
+        source_file=PathJoinSubstitution([FindPackageShare('demo'), 'config', 'nav.yaml']),
+        param_rewrites={'yaml_filename': 'map.yaml'}, convert_types=True)
+    composition = LaunchConfiguration('use_composition')
+    return LaunchDescription([
+        DeclareLaunchArgument('use_composition', default_value='True'),
+        GroupAction(condition=UnlessCondition(composition), actions=[
+            Node(package='nav2_map_server', executable='map_server', name='map_server', parameters=[params])]),
+        GroupAction(condition=IfCondition(composition), actions=[
+            Node(package='nav2_map_server', executable='map_server', name='map_server2', parameters=[params])]),
+    ])
+"""
+
+
+def test_reported_when_the_first_use_is_in_an_inactive_group(demo_findings: Any) -> None:
+    # nav2's bringup: the same rewritten file in an UnlessCondition group first, then the active one
+    files = {"launch/a.launch.py": GROUPS, "config/nav.yaml": FILE}
+    assert [line for line, _ in demo_findings(files, "launch/a.launch.py", "P115")] == [13]

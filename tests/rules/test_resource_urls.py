@@ -79,7 +79,8 @@ def test_the_package_of_a_package_url_must_exist(demo_findings: Any) -> None:
 
 
 @pytest.mark.parametrize("url", ["package://demo/config/front.yaml", "package://usb_cam/config/camera_info.yaml",
-                                 "package://${NAME}_calibration/front.yaml", "package://", "file:///opt/cam.yaml"])
+                                 "package://${NAME}_calibration/front.yaml", "package://", "file:///opt/cam.yaml",
+                                 "package://demo/calibration/${NAME}.yaml"])
 def test_known_packages_and_urls_not_yet_known_are_not_reported(demo_findings: Any, url: str) -> None:
     assert _xml(demo_findings, url, "U101") == []
     assert _xml(demo_findings, url, "U104") == []
@@ -140,6 +141,7 @@ def test_p114_a_bare_path_is_no_camera_info_url(demo_findings: Any) -> None:
     ("package://demo", "a package URL with no package name or no file after it"),
     ("http://cameras.local/front.yaml", 'a URL with the scheme "http"'),
     ("config/front.yaml", "neither a URL nor an absolute path"),
+    ("flash:///front", "a flash URL, which camera_info_manager recognises but does not read"),
 ])
 def test_p114_forms_camera_info_manager_rejects(demo_findings: Any, url: str, why: str) -> None:
     found = _params(demo_findings, url, "P114")
@@ -148,7 +150,7 @@ def test_p114_forms_camera_info_manager_rejects(demo_findings: Any, url: str, wh
 
 
 @pytest.mark.parametrize("url", ["", "''", "file:///home/robot/front.yaml", "FILE:///home/robot/front.yaml",
-                                 "flash:///front", "package://demo/config/front.yaml",
+                                 "package://demo/config/front.yaml",
                                  "file://${ROS_HOME}/camera_info/${NAME}.yaml"])
 def test_p114_forms_camera_info_manager_reads(demo_findings: Any, url: str) -> None:
     assert _params(demo_findings, url, "P114") == []
@@ -163,3 +165,45 @@ def test_p114_judges_only_drivers_that_use_camera_info_manager(demo_findings: An
     found = _py(demo_findings, bare, "P114", pkg="demo", exe="cam",
                 **{"package.xml": DEPENDS_ON_CIM, "src/cam.cpp": cpp})
     assert [line for line, _ in found] == [11]
+
+
+def test_the_package_of_a_url_with_the_camera_name_in_its_path(demo_findings: Any) -> None:
+    found = _xml(demo_findings, "package://demo_camera_calibrations/${NAME}.yaml", "U101")
+    assert [line for line, _ in found] == [3]
+
+
+MIXED = """from launch import LaunchDescription
+from launch.substitutions import PathJoinSubstitution
+from launch_ros.actions import Node
+from launch_ros.substitutions import FindPackageShare
+
+
+def generate_launch_description():
+    params = PathJoinSubstitution([FindPackageShare('demo'), 'config', 'cams.yaml'])
+    common = {'camera_info_url': '/opt/calib/front.yaml'}
+    return LaunchDescription([
+        Node(package='demo', executable='checker', name='calib_checker', parameters=[params, common]),
+        Node(package='usb_cam', executable='usb_cam_node_exe', name='front', parameters=[params, common]),
+    ])
+"""
+
+CAMS = """front:
+  ros__parameters:
+    camera_info_url: /opt/calib/front.yaml
+calib_checker:
+  ros__parameters:
+    camera_info_url: /opt/calib/rear.yaml
+"""
+
+
+def test_p114_judges_the_values_that_reach_a_camera(demo_findings: Any) -> None:
+    # a file's block by the nodes it names; a dict given to several nodes by all of them
+    found = demo_findings({"launch/a.launch.py": MIXED, "config/cams.yaml": CAMS}, "launch/a.launch.py", "P114")
+    assert [(line, msg.split(" is ")[0]) for line, msg in found] == [
+        (3, 'parameter "camera_info_url" for "front" in a parameter file'),
+        (9, 'parameter "camera_info_url" of /calib_checker'),
+    ]
+
+
+def test_p114_leaves_a_list_to_the_type_rules(demo_findings: Any) -> None:
+    assert _py(demo_findings, "['/opt/a.yaml', '/opt/b.yaml']", "P114") == []

@@ -298,6 +298,9 @@ class ActionBuilder:
                 continue  # emulate_tty='True': on, as written (only a false-looking one misleads)
             self.ev.wrong_type(f"plain-{want}", f"{n}({name}=...)", v, o.arg_span(-1, name))  # type: ignore[arg-type]
         if n in _PROCESS_ACTIONS:
+            v = o.arg(-1, "respawn")
+            if isinstance(v, str) or type(v) in (int, float):
+                self.ev.wrong_type("typed-bool", f"{n}(respawn=...)", v, o.arg_span(-1, "respawn"))
             v = o.arg(-1, "on_exit")
             if isinstance(v, (str, bool, int, float)) or (isinstance(v, LObj) and api.is_substitution(v.qual)):
                 self.ev.wrong_type("entities", f"{n}(on_exit=...)", v, o.arg_span(-1, "on_exit"))
@@ -528,10 +531,11 @@ def _distinct(values: tuple[Any, ...]) -> tuple[Any, ...]:
 
 
 def _respawn(o: LObj) -> Value | None:
-    """``NodeAction.respawn``: the value when it is text or substitutions (a bool literal is
-    typed already; another literal fails ``normalize_typed_substitution``, L008's)."""
+    """``NodeAction.respawn``: the value when it is substitutions. A bool literal is typed
+    already; any other literal, a string included, fails ``normalize_typed_substitution`` when
+    the action is built (L008, ``_check_text``)."""
     v = o.arg(-1, "respawn")
-    if v is None or type(v) in (bool, int, float):
+    if v is None or isinstance(v, (str, bool, int, float)):
         return None
     return opt_value(o, -1, "respawn")
 

@@ -48,8 +48,10 @@ def _strings(value: Any, span: Span, item_spans: Any) -> Iterator[tuple[str, Spa
 
 def parameter_strings(ctx: CheckContext) -> list[ParamString]:
     """Every string parameter value a launch file gives a node (a dict, ``<param>``,
-    ``SetParameter``), then every one in a parameter file (not a file a substitution rewrites: its
-    source is one of them), each (position, value) once. Listed once per run (U101, U104, P114)."""
+    ``SetParameter``), then the ones in parameter files that the rules read there (not a file a
+    substitution rewrites: its source is one of them): URLs and ``camera_info_url`` values (a
+    parameter file holds no path into the install space, which launch builds); each (position,
+    value) once. Listed once per run (U101, U104, P114)."""
     return run_memo(ctx.options, "_param_strings", ctx.launches, lambda: _parameter_strings(ctx))
 
 
@@ -81,6 +83,8 @@ def _parameter_strings(ctx: CheckContext) -> list[ParamString]:
             pkgs = frozenset(n.package for n, reached in users if n.package and id(block) in reached)
             for prm in block.params:
                 for value, span, item in _strings(prm.value, prm.value_span, prm.item_spans):
+                    if "://" not in value[:11] and not prm.name.endswith("camera_info_url"):
+                        continue
                     if (span, value) not in seen:
                         seen.add((span, value))
                         out.append(ParamString(value, span, prm.name, f'for "{block.key}" in a parameter file',

@@ -96,11 +96,10 @@ def _blocks_reaching(node: Any, model: Any) -> set[int]:
     """The blocks of a parameter file that give ``node`` its parameters (by ``id``); none when
     its name is not known."""
     from physai_lint.params.effective import matching_keys
-    from physai_lint.params.match import unnamed_component
+    from physai_lint.params.match import file_key_name
 
-    composable = node.kind == "composable_node"
-    fqn = "" if composable and unnamed_component(node) else node.fqn
-    return set() if fqn is None else {id(b) for b in matching_keys(fqn, model, composable)}
+    fqn = file_key_name(node)
+    return set() if fqn is None else {id(b) for b in matching_keys(fqn, model, node.kind == "composable_node")}
 
 
 def package_url(value: str) -> tuple[str, str] | None:

@@ -168,15 +168,20 @@ def _dependency_path(ctx: CheckContext, start: str, target: str) -> list[str]:
     return path[::-1]
 
 
+def _in_install(ctx: CheckContext, path: str) -> tuple[str, str] | None:
+    """(workspace package, the rest of the path) when ``path`` is in that package's (virtual)
+    install prefix: "<install>/<package>/<rest>"."""
+    root = getattr(ctx.packages, "install_root", None)
+    if not root or not path.startswith(root + "/"):
+        return None
+    name, _, rest = path[len(root) + 1 :].partition("/")
+    return (name, rest) if ctx.packages.workspace_package(name) is not None else None
+
+
 def _share_path(ctx: CheckContext, arg: str) -> str | None:
     """The package when ``arg`` is a path inside a workspace package's (virtual) share dir."""
-    root = getattr(ctx.packages, "install_root", None)
-    if not root or not arg.startswith(root + "/"):
-        return None
-    name, _, rest = arg[len(root) + 1 :].partition("/")
-    if ctx.packages.workspace_package(name) is None or not rest.startswith(f"share/{name}/"):
-        return None
-    return name
+    found = _in_install(ctx, arg)
+    return found[0] if found is not None and found[1].startswith(f"share/{found[0]}/") else None
 
 
 def _unfound_share_file(ctx: CheckContext, path: str) -> tuple[str, str, Any] | None:
@@ -253,13 +258,12 @@ def _glued_share(ctx: CheckContext, path: str) -> tuple[str, str] | None:
     """(package, what follows) when ``path`` runs a workspace package's share directory into the
     next part with no "/" between (``[FindPackageShare('cam'), 'config/cam.yaml']`` gives
     ".../share/camconfig/cam.yaml"); else None."""
-    root = getattr(ctx.packages, "install_root", None)
-    if not root or not path.startswith(root + "/"):
+    found = _in_install(ctx, path)
+    if found is None:
         return None
-    name, _, rest = path[len(root) + 1 :].partition("/")
+    name, rest = found
     share = f"share/{name}"
-    if not rest.startswith(share) or len(rest) == len(share) or rest[len(share)] == "/" \
-            or ctx.packages.workspace_package(name) is None:
+    if not rest.startswith(share) or len(rest) == len(share) or rest[len(share)] == "/":
         return None
     return name, rest[len(share) :]
 

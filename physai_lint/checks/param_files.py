@@ -191,11 +191,10 @@ def _by_launch_ros(node: Any, src: Any) -> bool:
 
 
 def _file_name(node: Any, src: Any) -> str | None:
-    """The name the file's keys are matched against for the node: its full name, or "" for a
-    component launch_ros loads with no name (only "/**" entries apply, ``unnamed_component``)."""
-    from physai_lint.params.match import unnamed_component
+    """The name the file's keys are matched against for the node (``file_key_name``)."""
+    from physai_lint.params.match import file_key_name
 
-    return "" if _by_launch_ros(node, src) and unnamed_component(node) else node.fqn
+    return file_key_name(node, _by_launch_ros(node, src))
 
 
 def _whole_file(path: str, model: Any, users: list[tuple[Any, Any]], written: bool = False) -> Diagnostic:

@@ -78,6 +78,24 @@ def _skipped(ctx: CheckContext, name: str, span: Any) -> Diagnostic | None:
         help=f"remove {relpath(pkg_dir)}/{marker} to build the package, or stop launching it", key=name)
 
 
+def _unresolved(ctx: CheckContext, name: str, span: Any, file: str | None,
+                reported: set[tuple[object, str]]) -> Diagnostic | bool:
+    """Whether package ``name``, referenced at ``span`` in ``file``, is a U101 to write: False when
+    it resolves, is reported there already, or the package holding ``file`` declares it
+    (``_declared``); the finding itself for a package colcon skips (``_skipped``); True for an
+    unknown package (then marked reported)."""
+    if ctx.packages.has_package(name) or (span, name) in reported:
+        return False
+    skipped = _skipped(ctx, name, span)
+    if skipped is not None:
+        reported.add((span, name))
+        return skipped
+    if _declared(ctx, name, file):
+        return False
+    reported.add((span, name))
+    return True
+
+
 def _declared(ctx: CheckContext, name: str, file: str | None) -> bool:
     """Whether the package holding ``file`` declares a run dependency on ``name``: rosdep installs
     it from wherever its rules point (a vendor's apt source, a private rosdep key), which the
@@ -93,19 +111,13 @@ def _declared(ctx: CheckContext, name: str, file: str | None) -> bool:
 def unknown_package(ctx: CheckContext) -> Iterator[Diagnostic]:
     reported: set[tuple[object, str]] = set()
     for _, node in all_nodes(ctx):
-        if node.package is None or ctx.packages.has_package(node.package):
+        if node.package is None:
             continue
         span = node.spans.get("package", node.span)
-        if (span, node.package) in reported:
+        verdict = _unresolved(ctx, node.package, span, span.file or node.file, reported)
+        if verdict is not True:
+            yield from (verdict,) if verdict else ()
             continue
-        skipped = _skipped(ctx, node.package, span)
-        if skipped is not None:
-            reported.add((span, node.package))
-            yield skipped
-            continue
-        if _declared(ctx, node.package, span.file or node.file):
-            continue
-        reported.add((span, node.package))
         if not node.package:
             yield Diagnostic(
                 "U101", span, "the package name is empty (its value here is \"\"); ament_index refuses "
@@ -119,16 +131,10 @@ def unknown_package(ctx: CheckContext) -> Iterator[Diagnostic]:
             help=fix, key=node.package)
     for launch in ctx.launches:
         for name, span, _file, from_config in launch.package_refs:
-            if span is None or ctx.packages.has_package(name) or (span, name) in reported:
+            verdict = _unresolved(ctx, name, span, span.file or _file, reported) if span is not None else False
+            if verdict is not True:
+                yield from (verdict,) if verdict else ()
                 continue
-            skipped = _skipped(ctx, name, span)
-            if skipped is not None:
-                reported.add((span, name))
-                yield skipped
-                continue
-            if _declared(ctx, name, span.file or _file):
-                continue
-            reported.add((span, name))
             if not name and from_config:  # a required argument's placeholder default, not set
                 arg = f'launch argument "{from_config}"' if isinstance(from_config, str) else "a launch argument"
                 yield Diagnostic(
@@ -156,18 +162,11 @@ def _url_packages(ctx: CheckContext, reported: set[tuple[object, str]]) -> Itera
 
     for ps in parameter_strings(ctx):
         found = package_url(ps.value)
-        if found is None:
+        verdict = _unresolved(ctx, found[0], ps.span, ps.span.file, reported) if found else False
+        if verdict is not True:
+            yield from (verdict,) if verdict else ()
             continue
-        name = found[0]
-        if ctx.packages.has_package(name) or (ps.span, name) in reported:
-            continue
-        reported.add((ps.span, name))
-        skipped = _skipped(ctx, name, ps.span)
-        if skipped is not None:
-            yield skipped
-            continue
-        if _declared(ctx, name, ps.span.file):
-            continue
+        name = found[0]  # type: ignore[index]
         extra, fix = _package_help(ctx, name, None)
         yield Diagnostic(
             "U101", ps.span,

@@ -229,9 +229,10 @@ def _launch_kind(value: Any) -> str | None:
 def node_parameters(node: Any, files: Mapping[str, ParamFileModel], distro: str = "humble"
                     ) -> dict[str, EffectiveParam]:
     """``effective_parameters`` of a resolved node (``NodeInstance``)."""
-    composable = node.kind == "composable_node"
-    return effective_parameters(node.fqn, node.param_sources, files, composable, distro,
-                                named=not composable or node.name_explicit)
+    from physai_lint.params.match import unnamed_component
+
+    return effective_parameters(node.fqn, node.param_sources, files, node.kind == "composable_node", distro,
+                                named=not unnamed_component(node))
 
 
 def _effective_composable(fqn: str | None, sources: list[ParamSourceR],

@@ -58,6 +58,13 @@ def unnamed_component(node: Any) -> bool:
     return node.kind == "composable_node" and not node.name_explicit
 
 
+def file_key_name(node: Any, by_launch_ros: bool = True) -> str | None:
+    """The name the keys of a node's own parameter files are matched against: "" for a component
+    launch_ros loads with no name (``by_launch_ros``: its files are read by launch_ros, not by rcl
+    through forwarded arguments), which only "/**" entries match; else its full name."""
+    return "" if by_launch_ros and unnamed_component(node) else node.fqn
+
+
 def explain_for(key: str, node: Any) -> str:
     """``explain_no_match`` or, for a composable node, ``explain_composable_no_match``."""
     if unnamed_component(node):

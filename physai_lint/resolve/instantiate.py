@@ -173,11 +173,6 @@ class Instantiator:
         if span is not None and self.frame.active is not False:
             self.result.invalid_conditions.append((span, text, how))
 
-    def on_bad_typed(self, span: Span | None, text: str, how: str) -> None:
-        """A value launch types as a bool when the action runs (``how``: "respawn") is no YAML
-        boolean: reported with the conditions (L109)."""
-        self._on_bad_condition(span, text, how)
-
     def _on_bad_expression(self, span: Span | None, text: str, why: str) -> None:
         if span is not None and self.frame.active is not False:
             self.result.expression_errors.append((span, text, why))

@@ -526,9 +526,10 @@ class NodeBuilder:
         variable holding a LaunchConfiguration)."""
         if value is None:
             return
-        text = self.inst.ev.eval(value, scope)
-        if text is not None and yaml_bool(text) is None:
-            self.inst.on_bad_typed(span or v.span_of(value), text, "respawn")
+        ev = self.inst.ev
+        text = ev.eval(value, scope)
+        if text is not None and yaml_bool(text) is None and ev.on_bad_condition is not None:
+            ev.on_bad_condition(span or v.span_of(value), text, "respawn")  # L109, with the conditions
 
     def process(self, a: ir.ExecuteProcess, scope: Scope) -> None:
         fr = self.inst.frame
